@@ -1,0 +1,58 @@
+// The harmonic chain of the paper, Eq. (dimless), in dimensionless form.
+//
+// Design note: ChainParams is constant for a run; ChainState holds everything that
+// changes (MuJoCo's mjModel / mjData split). Bead j (1..N) is stored at index j-1.
+// Spring j joins beads j-1 and j (bead 0 is the wall, psi_0 = 0); spring index 0 is
+// the optional pull string between the drive and bead N.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace cb {
+
+enum class BreakMode {
+  Abs,      // |phi_j| >= phi_c, Eq. (break), the paper's rule
+  Stretch,  // phi_j >= phi_c: only tension breaks a spring
+};
+
+struct ChainParams {
+  int beads = 30;                                             // N
+  double gamma = 0.0;                                         // friction -2 gamma psi'
+  double threshold = std::numeric_limits<double>::infinity();  // phi_c; inf = unbreakable
+  BreakMode break_on = BreakMode::Abs;
+  bool pull_string = false;  // f acts through a massless string that breaks at f >= phi_c
+
+  bool breakable() const { return threshold < std::numeric_limits<double>::infinity(); }
+};
+
+struct BreakEvent {
+  int spring = 0;      // 1..N, or 0 for the pull string
+  double tau = 0.0;    // located crossing time
+  std::int64_t step = 0;  // the step during which it broke (tau in (step-1, step] * dt)
+};
+
+struct ChainState {
+  std::vector<double> psi;      // psi_j, index j-1
+  std::vector<double> vel;      // d psi_j / d tau
+  std::vector<int> broken;      // broken springs, sorted ascending (1..N)
+  bool string_broken = false;   // the pull string (spring 0)
+  std::int64_t step = 0;        // time is an integer step count: tau = step * dt
+  double tau = 0.0;
+  // Energy bookkeeping (dimensionless units K l^2), integrated with the same RK4 stages.
+  double work = 0.0;         // work done by the drive, incl. impulse kicks
+  double dissipated = 0.0;   // energy removed by friction, int 2 gamma sum psi'^2
+  double break_loss = 0.0;   // elastic energy of springs at the moment they broke
+  std::vector<BreakEvent> breaks;
+};
+
+bool spring_intact(const ChainState& s, int spring);
+
+// Extension phi_j = psi_j - psi_{j-1} of spring j (1..N), whether broken or not.
+inline double extension(const ChainState& s, int spring) {
+  const double left = spring > 1 ? s.psi[spring - 2] : 0.0;
+  return s.psi[spring - 1] - left;
+}
+
+}  // namespace cb
