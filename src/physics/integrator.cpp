@@ -1,1 +1,267 @@
-// stub
+#include "physics/integrator.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <complex>
+#include <sstream>
+
+#include "physics/crossing.h"
+#include "physics/rk4_tile.h"
+#include "physics/worker_pool.h"
+
+namespace cb {
+
+namespace {
+
+// Below this many beads per extra thread, waking a thread costs more than it saves.
+constexpr int kBeadsPerThread = 20000;
+
+}  // namespace
+
+struct Integrator::Impl {
+  std::vector<double> psi_next, vel_next;
+  detail::WorkerPool pool;
+  std::vector<detail::TileScratch> scratch;  // one per worker
+  std::vector<detail::StepOutput> outputs;   // one per worker
+  std::vector<std::pair<int, int>> ranges;   // beads [first, last) per worker, tile-aligned
+  std::size_t next_kick = 0;
+
+  Impl(int beads, int threads)
+      : psi_next(beads), vel_next(beads), pool(std::clamp(threads, 1, 1 + beads / kBeadsPerThread)) {
+    const int workers = pool.size();
+    scratch.resize(workers);
+    outputs.resize(workers);
+    const int tiles = (beads + detail::kTile - 1) / detail::kTile;
+    for (int w = 0; w < workers; ++w) {
+      const int t0 = tiles * w / workers, t1 = tiles * (w + 1) / workers;
+      ranges.emplace_back(std::min(beads, t0 * detail::kTile), std::min(beads, t1 * detail::kTile));
+    }
+  }
+};
+
+Integrator::Integrator(const ChainParams& params, Forcing forcing, IntegratorOptions options)
+    : params_(params), forcing_(std::move(forcing)), options_(options) {
+  assert(params_.beads >= 1 && options_.dt > 0.0);
+  state_.psi.assign(params_.beads, 0.0);
+  state_.vel.assign(params_.beads, 0.0);
+  impl_ = std::make_unique<Impl>(params_.beads, options_.threads);
+}
+
+Integrator::~Integrator() = default;
+
+double Integrator::force_now() const {
+  return state_.string_broken ? 0.0 : forcing_(state_.tau);
+}
+
+bool Integrator::advance_to(std::int64_t target_step) {
+  while (state_.step < target_step)
+    if (!step()) return false;
+  return true;
+}
+
+bool Integrator::step() {
+  if (!error_.empty()) return false;
+  const double dt = options_.dt;
+  const double t0 = static_cast<double>(state_.step) * dt;
+  const double t1 = static_cast<double>(state_.step + 1) * dt;
+  const double snap = 1e-9 * dt;  // closer than this to a grid time counts as on it
+
+  // Split the step at the drive's jumps, kinks and kicks that fall strictly inside it.
+  std::vector<double>& cuts = cuts_;
+  cuts.clear();
+  for (double b : forcing_.breakpoints)
+    if (b > t0 + snap && b < t1 - snap) cuts.push_back(b);
+  for (const Kick& k : forcing_.kicks)
+    if (k.tau > t0 + snap && k.tau < t1 - snap) cuts.push_back(k.tau);
+  std::sort(cuts.begin(), cuts.end());
+  cuts.push_back(t1);
+  auto is_breakpoint = [&](double t) {
+    for (double b : forcing_.breakpoints)
+      if (std::abs(b - t) <= snap) return true;
+    return false;
+  };
+
+  double from = t0;
+  for (double to : cuts) {
+    apply_kicks(from + snap);
+    if (!advance_interval(from, to, is_breakpoint(to))) return false;
+    from = to;
+  }
+  state_.step += 1;
+  state_.tau = t1;
+  return true;
+}
+
+void Integrator::apply_kicks(double up_to) {
+  // A kick is a delta force: bead N's velocity jumps, and the drive does the work
+  // (v + s)^2 / 2 - v^2 / 2 on it. Kicks are not transmitted once the pull string broke.
+  auto& next = impl_->next_kick;
+  while (next < forcing_.kicks.size() && forcing_.kicks[next].tau <= up_to) {
+    if (!state_.string_broken) {
+      double& v = state_.vel.back();
+      const double s = forcing_.kicks[next].strength;
+      state_.work += 0.5 * ((v + s) * (v + s) - v * v);
+      v += s;
+    }
+    ++next;
+  }
+}
+
+double Integrator::drive_at(double tau) const {
+  return state_.string_broken ? 0.0 : forcing_(tau);
+}
+
+bool Integrator::rk4(double ta, double tb, bool end_is_breakpoint) {
+  Impl& im = *impl_;
+  detail::StepInput in;
+  in.psi = state_.psi.data();
+  in.vel = state_.vel.data();
+  in.psi_out = im.psi_next.data();
+  in.vel_out = im.vel_next.data();
+  in.beads = params_.beads;
+  in.gamma = params_.gamma;
+  in.h = tb - ta;
+  // At a jump the last stage must see the force from the left.
+  const double t_end = end_is_breakpoint ? std::nextafter(tb, ta) : tb;
+  in.force[0] = drive_at(ta);
+  in.force[1] = drive_at(0.5 * (ta + tb));
+  in.force[2] = drive_at(t_end);
+  in.broken = &state_.broken;
+  in.threshold = params_.breakable() ? params_.threshold : 0.0;
+  in.stretch_only = params_.break_on == BreakMode::Stretch;
+  im.pool.run([&](int w) {
+    im.outputs[w].reset();
+    detail::rk4_beads(in, im.ranges[w].first, im.ranges[w].second, im.scratch[w], im.outputs[w]);
+  });
+  stage_dissipation_ = 0.0;
+  stage_work_ = 0.0;
+  double probe = 0.0;
+  const double weights[4] = {1.0, 2.0, 2.0, 1.0};
+  const double forces[4] = {in.force[0], in.force[1], in.force[1], in.force[2]};
+  for (const auto& out : im.outputs) {
+    probe += out.finite_probe;
+    for (int s = 0; s < 4; ++s) {
+      stage_dissipation_ += weights[s] * out.dissipation_rate[s];
+      stage_work_ += weights[s] * forces[s] * out.end_velocity[s];
+    }
+  }
+  stage_dissipation_ *= in.h / 6.0;
+  stage_work_ *= in.h / 6.0;
+  return std::isfinite(probe);
+}
+
+void Integrator::commit(double tb) {
+  state_.psi.swap(impl_->psi_next);
+  state_.vel.swap(impl_->vel_next);
+  state_.dissipated += stage_dissipation_;
+  state_.work += stage_work_;
+  state_.tau = tb;
+}
+
+bool Integrator::advance_interval(double ta, double tb, bool end_is_breakpoint) {
+  for (int guard = 0; guard <= params_.beads + 1; ++guard) {
+    if (!rk4(ta, tb, end_is_breakpoint)) {
+      report_non_finite(ta);
+      return false;
+    }
+    // The earliest threshold crossing inside (ta, tb], if any.
+    double first = tb + 1.0;
+    int spring = -1;
+    for (const auto& out : impl_->outputs)
+      for (const auto& c : out.candidates) {
+        const double theta = detail::hermite_first_crossing(c.p0, c.p1, c.m0, c.m1, tb - ta,
+                                                            params_.threshold,
+                                                            params_.break_on == BreakMode::Stretch);
+        if (theta >= 0.0 && (ta + theta < first || (ta + theta == first && c.spring < spring))) {
+          first = ta + theta;
+          spring = c.spring;
+        }
+      }
+    if (params_.pull_string && params_.breakable() && !state_.string_broken) {
+      const double f_end = drive_at(end_is_breakpoint ? std::nextafter(tb, ta) : tb);
+      const double t = detail::first_time_at_least(forcing_.f ? forcing_.f : [](double) { return 0.0; },
+                                                   f_end, ta, tb, params_.threshold);
+      if (t >= 0.0 && t <= first) {
+        first = t;
+        spring = 0;
+      }
+    }
+    if (spring < 0) {
+      commit(tb);
+      return true;
+    }
+    // Integrate exactly to the crossing, then remove the spring and go on from there.
+    if (first > ta) {
+      if (!rk4(ta, first, false)) {
+        report_non_finite(ta);
+        return false;
+      }
+      commit(first);
+    }
+    break_spring(spring, first);
+    ta = first;
+    if (ta >= tb) return true;
+  }
+  return true;
+}
+
+void Integrator::break_spring(int spring, double tau) {
+  state_.breaks.push_back({spring, tau, state_.step + 1});
+  if (spring == 0) {
+    state_.string_broken = true;
+    return;
+  }
+  const double phi = extension(state_, spring);
+  state_.break_loss += 0.5 * phi * phi;
+  state_.broken.insert(std::lower_bound(state_.broken.begin(), state_.broken.end(), spring), spring);
+}
+
+void Integrator::report_non_finite(double tau) {
+  std::ostringstream msg;
+  msg << "the chain's state stopped being finite near tau = " << tau << ". ";
+  const double limit = rk4_stability_limit(params_.beads, params_.gamma);
+  if (options_.dt > limit)
+    msg << "dt = " << options_.dt << " is beyond RK4's stability limit " << limit
+        << " for this chain: use a smaller dt.";
+  else
+    msg << "The drive f(tau) = " << drive_at(tau)
+        << " may be growing without bound or not finite: check the drive's parameters or expression.";
+  error_ = msg.str();
+}
+
+bool spring_intact(const ChainState& s, int spring) {
+  if (spring == 0) return !s.string_broken;
+  return !std::binary_search(s.broken.begin(), s.broken.end(), spring);
+}
+
+double rk4_stability_limit(int beads, double gamma) {
+  // RK4's amplification factor R(z) = 1 + z + z^2/2 + z^3/6 + z^4/24 must stay within the
+  // unit circle for z = h mu, mu = -gamma +- sqrt(gamma^2 - Omega^2), Omega = 2 sin(k/2) over
+  // the chain's modes. Omega fills (Omega_0, Omega_{N-1}); a fine sample of that range and a
+  // bisection in h give the limit to about 1e-6.
+  auto stable = [&](double h) {
+    const int samples = std::min(beads, 512);
+    for (int s = 0; s < samples; ++s) {
+      const int n = samples == beads ? s : static_cast<int>((static_cast<long>(beads - 1) * s) / (samples - 1));
+      const double k = (n + 0.5) * M_PI / (beads + 0.5);
+      const double omega = 2.0 * std::sin(0.5 * k);
+      const std::complex<double> root = std::sqrt(std::complex<double>(gamma * gamma - omega * omega, 0.0));
+      for (const auto mu : {-gamma + root, -gamma - root}) {
+        const std::complex<double> z = h * mu;
+        const std::complex<double> r = 1.0 + z * (1.0 + z * (0.5 + z * (1.0 / 6.0 + z / 24.0)));
+        if (std::abs(r) > 1.0 + 1e-12) return false;
+      }
+    }
+    return true;
+  };
+  double lo = 0.0, hi = 4.0;
+  while (stable(hi) && hi < 1e6) hi *= 2.0;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (stable(mid) ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+}  // namespace cb

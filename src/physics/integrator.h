@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "physics/chain.h"
 #include "physics/forcing.h"
@@ -51,7 +52,17 @@ class Integrator {
   std::string error_;
   std::unique_ptr<Impl> impl_;
 
+  std::vector<double> cuts_;        // split points of the current step (reused, no allocation)
+  double stage_dissipation_ = 0.0;  // energy books of the last rk4() call, applied by commit()
+  double stage_work_ = 0.0;
+
   bool advance_interval(double t_from, double t_to, bool end_is_breakpoint);
+  bool rk4(double t_from, double t_to, bool end_is_breakpoint);  // into the scratch state
+  void commit(double t_to);
+  void apply_kicks(double up_to);
+  void break_spring(int spring, double tau);
+  double drive_at(double tau) const;
+  void report_non_finite(double tau);
 };
 
 // Largest dt for which classical RK4 is stable on every normal mode of an N-bead chain

@@ -1,0 +1,87 @@
+#include "physics/crossing.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cb::detail {
+
+namespace {
+
+// g(s) on [lo, hi] with g(lo) < 0 <= g(hi): the crossing, to double precision in s.
+template <class G>
+double bisect(const G& g, double lo, double hi) {
+  for (int i = 0; i < 80 && hi - lo > 1e-17; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (g(mid) >= 0.0 ? hi : lo) = mid;
+  }
+  return hi;
+}
+
+}  // namespace
+
+double hermite_first_crossing(double p0, double p1, double m0, double m1, double h, double c,
+                              bool stretch_only) {
+  // p(s) = a + b s + q s^2 + d s^3 on s = theta / h in [0, 1].
+  const double a = p0, b = h * m0;
+  const double q = -3.0 * p0 - 2.0 * h * m0 + 3.0 * p1 - h * m1;
+  const double d = 2.0 * p0 + h * m0 - 2.0 * p1 + h * m1;
+  auto p = [&](double s) { return a + s * (b + s * (q + s * d)); };
+  auto up = [&](double s) { return p(s) - c; };
+  auto down = [&](double s) { return -p(s) - c; };
+  auto reached = [&](double s) { return up(s) >= 0.0 || (!stretch_only && down(s) >= 0.0); };
+  if (reached(0.0)) return 0.0;
+
+  // Split [0, 1] where p' = b + 2 q s + 3 d s^2 vanishes: p is monotone on each piece, so
+  // a sign change at a piece's ends is the only way to cross inside it.
+  double cuts[4] = {0.0, 1.0, 1.0, 1.0};
+  int count = 1;
+  const double A = 3.0 * d, B = 2.0 * q, C = b;
+  if (std::abs(A) > 1e-300) {
+    const double disc = B * B - 4.0 * A * C;
+    if (disc > 0.0) {
+      const double r = std::sqrt(disc);
+      // Stable roots of the quadratic (no cancellation).
+      const double t = -0.5 * (B + std::copysign(r, B));
+      double r1 = t / A, r2 = t != 0.0 ? C / t : r1;
+      if (r1 > r2) std::swap(r1, r2);
+      for (double r0 : {r1, r2})
+        if (r0 > 0.0 && r0 < 1.0) cuts[count++] = r0;
+    }
+  } else if (std::abs(B) > 1e-300) {
+    const double r0 = -C / B;
+    if (r0 > 0.0 && r0 < 1.0) cuts[count++] = r0;
+  }
+  cuts[count++] = 1.0;
+  for (int k = 0; k + 1 < count; ++k) {
+    const double lo = cuts[k], hi = cuts[k + 1];
+    double best = 2.0;
+    if (up(lo) < 0.0 && up(hi) >= 0.0) best = bisect(up, lo, hi);
+    if (!stretch_only && down(lo) < 0.0 && down(hi) >= 0.0) best = std::min(best, bisect(down, lo, hi));
+    if (best <= 1.0) return best * h;
+  }
+  return -1.0;
+}
+
+double first_time_at_least(const std::function<double(double)>& f, double f_end, double ta,
+                           double tb, double c) {
+  if (f(ta) >= c) return ta;
+  constexpr int kSamples = 16;
+  double prev = ta;
+  for (int k = 1; k <= kSamples; ++k) {
+    const double t = k == kSamples ? tb : ta + (tb - ta) * k / kSamples;
+    const double value = k == kSamples ? f_end : f(t);
+    if (value >= c) {
+      // Bisect inside (prev, t]; the end point itself uses its left limit.
+      double lo = prev, hi = t;
+      for (int i = 0; i < 100 && hi - lo > 1e-15 * std::max(1.0, std::abs(hi)); ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (f(mid) >= c ? hi : lo) = mid;
+      }
+      return hi;
+    }
+    prev = t;
+  }
+  return -1.0;
+}
+
+}  // namespace cb::detail
