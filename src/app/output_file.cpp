@@ -1,1 +1,61 @@
-// stub
+#include "app/output_file.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+
+namespace cb {
+
+namespace {
+
+std::string reason(int err) { return std::strerror(err); }
+
+}  // namespace
+
+OutputFile::OutputFile(std::string path) : path_(std::move(path)) {
+  namespace fs = std::filesystem;
+  const fs::path target(path_);
+  if (fs::is_directory(target))
+    throw OutputError(path_ + ": is a directory; give a file name, e.g. " + (target / "out.csv").string());
+  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  if (!fs::is_directory(dir))
+    throw OutputError(path_ + ": the directory " + dir.string() +
+                      " does not exist; create it (mkdir -p " + dir.string() + ") or choose another path");
+  // A hidden name in the same directory, so that the final rename cannot cross filesystems.
+  std::string hidden(".");
+  hidden.append(target.filename().string()).append(".part-").append(std::to_string(::getpid()));
+  temp_ = (dir / hidden).string();
+  file_ = std::fopen(temp_.c_str(), "wb");
+  if (!file_)
+    throw OutputError(path_ + ": cannot write in " + dir.string() + " (" + reason(errno) +
+                      "); choose a writable directory");
+}
+
+OutputFile::~OutputFile() {
+  if (file_) std::fclose(file_);
+  if (!temp_.empty()) std::remove(temp_.c_str());
+}
+
+void OutputFile::write(std::string_view text) {
+  if (failed_ || !file_) return;
+  if (std::fwrite(text.data(), 1, text.size(), file_) != text.size()) failed_ = true;
+}
+
+void OutputFile::commit() {
+  if (!file_) return;
+  const int err_before = failed_ ? errno : 0;
+  const bool flushed = !failed_ && std::fflush(file_) == 0 && ::fsync(::fileno(file_)) == 0;
+  const int err = flushed ? 0 : (err_before ? err_before : errno);
+  std::fclose(file_);
+  file_ = nullptr;
+  if (!flushed)
+    throw OutputError(path_ + ": writing failed (" + reason(err) +
+                      "); nothing was written under that name. Free some space or choose another directory");
+  if (std::rename(temp_.c_str(), path_.c_str()) != 0)
+    throw OutputError(path_ + ": cannot rename the finished file into place (" + reason(errno) + ")");
+  temp_.clear();
+}
+
+}  // namespace cb

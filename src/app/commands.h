@@ -1,0 +1,40 @@
+// The command-line commands. Each returns the process exit status:
+// 0 success, 1 a run that failed (non-finite state, write error), 2 a user error in the
+// scene or the options, 130 interrupted (SIGINT/SIGTERM).
+#pragma once
+
+#include <atomic>
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace cb {
+
+extern std::atomic<bool> g_interrupted;  // set by the signal handler; long loops poll it
+
+struct RunOptions {
+  std::string scene;
+  std::vector<Override> overrides;
+  std::string solver = "rk4";  // rk4 | exact | continuum
+  std::string csv;             // empty: no CSV
+  int every = 1;
+  bool psi = false;
+  bool quiet = false;
+  int threads = 1;
+};
+int run_command(const RunOptions& options);
+
+struct SweepOptions {
+  std::string scene;
+  std::vector<Override> overrides;
+  std::string vary;            // KEY=LO:HI:COUNT[:log]
+  std::string solver = "rk4";  // rk4 | exact
+  int jobs = 0;                // 0: all cores
+  std::string shard = "1/1";   // I/S, I in 1..S
+  std::string csv;
+  bool quiet = false;
+};
+int sweep_command(const SweepOptions& options);
+
+}  // namespace cb

@@ -1,0 +1,35 @@
+// Output files written whole or not at all: data goes to a temporary name in the target's
+// directory and is renamed over the requested name only by commit(). A run that fails or is
+// interrupted leaves no truncated file under the requested name.
+#pragma once
+
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
+namespace cb {
+
+struct OutputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+class OutputFile {
+ public:
+  // Opens the temporary file at once, so an unwritable directory is reported before any
+  // work is done. Throws OutputError with the path, the reason and a fix.
+  explicit OutputFile(std::string path);
+  ~OutputFile();  // removes the temporary file unless committed
+  OutputFile(const OutputFile&) = delete;
+  OutputFile& operator=(const OutputFile&) = delete;
+
+  void write(std::string_view text);
+  void commit();  // flush, close, rename; throws OutputError (e.g. disk full)
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_, temp_;
+  std::FILE* file_ = nullptr;
+  bool failed_ = false;
+};
+
+}  // namespace cb
