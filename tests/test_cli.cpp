@@ -1,0 +1,137 @@
+// The command line as a user meets it: the run and sweep contracts (CSV headers, JSON
+// summary, exit codes), sharding, and that failures leave no file behind.
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int status = -1;
+  std::string out;  // stdout (stderr is sent to err_file)
+  std::string err;
+};
+
+fs::path temp_dir() {
+  const fs::path dir = fs::temp_directory_path() / ("chainbreak_cli_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+Result chainbreak(const std::string& args) {
+  const fs::path err = temp_dir() / "stderr.txt";
+  const std::string cmd = std::string(CHAINBREAK_EXE) + " " + args + " 2>" + err.string();
+  Result r;
+  FILE* pipe = ::popen(cmd.c_str(), "r");
+  REQUIRE(pipe);
+  char buf[4096];
+  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) r.out.append(buf, n);
+  const int raw = ::pclose(pipe);
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  r.err = slurp(err);
+  return r;
+}
+
+std::string scene(const std::string& name) { return std::string(CHAINBREAK_SCENES) + "/" + name; }
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string l; std::getline(in, l);) out.push_back(l);
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("run writes the CSV contract and a JSON summary", "[cli]") {
+  const fs::path csv = temp_dir() / "ramp.csv";
+  const auto r = chainbreak("run " + scene("friction.toml") +
+                            " --set integrator.t_end=2 --set chain.beads=4 --csv " + csv.string() +
+                            " --every 10 --psi --quiet");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const auto summary = nlohmann::json::parse(r.out);
+  CHECK(summary["steps"] == 200);  // t_end / dt = 2 / 0.01
+  CHECK(summary["breaks"].is_array());
+  CHECK(summary["energy_balance_error"].get<double>() < 1e-9);
+  const auto rows = lines(slurp(csv));
+  REQUIRE(rows.size() == 1 + 21);  // header + steps 0, 10, ..., 200
+  CHECK(rows[0] == "tau,f,energy,kinetic,potential,phi_1,phi_2,phi_3,phi_4,psi_1,psi_2,psi_3,psi_4");
+  CHECK(rows[1].rfind("0,0,0,0,0,", 0) == 0);  // at rest at tau = 0, ramp f(0) = 0
+  CHECK(rows[2].rfind("0.1,", 0) == 0);        // tau = 10 steps * 0.01, printed exactly
+}
+
+TEST_CASE("run --solver exact and rk4 agree on the CSV", "[cli]") {
+  const fs::path a = temp_dir() / "rk4.csv", b = temp_dir() / "exact.csv";
+  const std::string common = " --set integrator.t_end=40 --set chain.threshold=1e9 --every 1000 --quiet";
+  REQUIRE(chainbreak("run " + scene("friction.toml") + common + " --csv " + a.string()).status == 0);
+  REQUIRE(chainbreak("run " + scene("friction.toml") + common + " --solver exact --csv " + b.string())
+              .status == 0);
+  const auto ra = lines(slurp(a)), rb = lines(slurp(b));
+  REQUIRE(ra.size() == rb.size());
+  REQUIRE(ra.size() == 6);
+  // Last row, phi_N column: RK4 at dt = 0.01 vs the exact modal solution, 1e-7 + 1e-7 rel.
+  auto last_value = [](const std::string& row) { return std::stod(row.substr(row.rfind(',') + 1)); };
+  const double x = last_value(ra.back()), y = last_value(rb.back());
+  CHECK(std::abs(x - y) <= 1e-7 + 1e-7 * std::abs(y));
+}
+
+TEST_CASE("A bad scene exits 2 with file:line:col and writes nothing", "[cli]") {
+  const fs::path dir = temp_dir();
+  const fs::path bad = dir / "bad.toml";
+  std::ofstream(bad) << "[chain]\nbeads = 30\ngama = 0.1\n[drive]\ntype = \"ramp\"\nbeta = 1\n"
+                        "[integrator]\ndt = 0.01\nt_end = 10\n";
+  const fs::path csv = dir / "never.csv";
+  const auto r = chainbreak("run " + bad.string() + " --csv " + csv.string());
+  CHECK(r.status == 2);
+  CHECK_THAT(r.err, Catch::Contains(bad.string() + ":3:"));
+  CHECK_THAT(r.err, Catch::Contains("gamma"));
+  CHECK_FALSE(fs::exists(csv));
+}
+
+TEST_CASE("An unwritable output fails before any work, leaving nothing", "[cli]") {
+  const auto r = chainbreak("run " + scene("friction.toml") + " --csv /nonexistent-dir/out.csv");
+  CHECK(r.status == 2);
+  CHECK_THAT(r.err, Catch::Contains("/nonexistent-dir"));
+}
+
+TEST_CASE("sweep shards concatenate to the full table", "[cli]") {
+  const fs::path dir = temp_dir();
+  const std::string base = "sweep " + scene("anomalous_breaking.toml") +
+                           " --solver exact --vary chain.threshold=5:200:13 --quiet --csv ";
+  REQUIRE(chainbreak(base + (dir / "full.csv").string()).status == 0);
+  std::string joined;
+  for (int i = 1; i <= 3; ++i) {
+    const fs::path part = dir / ("part" + std::to_string(i) + ".csv");
+    REQUIRE(chainbreak(base + part.string() + " --shard " + std::to_string(i) + "/3").status == 0);
+    auto rows = lines(slurp(part));
+    REQUIRE(rows.front() == "value,spring,tau");
+    for (std::size_t k = i == 1 ? 0 : 1; k < rows.size(); ++k) joined += rows[k] + "\n";
+  }
+  const std::string full = slurp(dir / "full.csv");
+  CHECK(joined == full);
+  CHECK(lines(full).size() == 14);
+}
+
+TEST_CASE("sweep rejects a malformed --vary with a usage hint", "[cli]") {
+  const auto r = chainbreak("sweep " + scene("anomalous_breaking.toml") +
+                            " --vary chain.threshold=5:200 --csv " + (temp_dir() / "x.csv").string());
+  CHECK(r.status == 2);
+  CHECK_THAT(r.err, Catch::Contains("KEY=LO:HI:COUNT"));
+}
