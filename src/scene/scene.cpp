@@ -1,1 +1,163 @@
-// stub: being written
+// Scene files: TOML -> SceneDesc, with --set overrides and errors a person can act on.
+//
+// ==== The schema (a contract: README, issue #2) ============================================
+//
+//   title = "Anomalous breaking"   # optional string; default: the file name without .toml
+//
+//   [chain]                        # required
+//   beads = 30            # N, integer >= 1 (required)
+//   gamma = 0.0           # dimensionless friction >= 0 of Eq. (dimless); default 0
+//   threshold = 1.0       # phi_c > 0 of Eq. (break); omit for an unbreakable chain
+//   break_on = "abs"      # "abs": |phi_j| >= phi_c (the paper); "stretch": phi_j >= phi_c
+//   pull_string = false   # pull through a massless string that breaks at f >= phi_c;
+//                         # requires threshold (Fig. 1, the one-ball experiment)
+//
+//   [drive]                        # required; f(tau) = g(tau - t0) for tau >= t0, 0 before
+//   type = "ramp"         # step | ramp | sine | impulses | table | expr (required)
+//   t0 = 0.0              # all types: start time >= 0; default 0
+//   beta = 0.02           # ramp (required): f = beta (tau - t0)
+//   amplitude = 1.0       # step (required): f = amplitude; sine (required): its amplitude
+//   period = 120.0        # sine (required, > 0): f = amplitude sin(2 pi (tau - t0) / period)
+//   times = [0.0, 30.0]   # impulses (required, non-empty, each >= 0): kick times after t0
+//   strengths = [1, 1]    # impulses (optional, one per time): f = sum s_k delta(tau - t0 - t_k);
+//                         # default 1 each
+//   file = "data/x.csv"   # table (required): CSV of "tau,f" rows, path relative to the
+//                         # scene file's folder, loaded by load_drive_table; linear in between
+//   expr = "0.02*t"       # expr (required): muParser expression in t = tau - t0 (pi defined),
+//                         # compiled on load by make_forcing
+//   Keys of other drive types may stay in the file (they are type-checked and ignored), so
+//   `--set drive.type=step --set drive.amplitude=1` works on a ramp scene.
+//
+//   [integrator]                   # required
+//   dt = 0.01             # > 0 and <= rk4_stability_limit(N, gamma); default 0.01 (in tau)
+//   t_end = 400.0         # > 0 (required)
+//   after_break = 20.0    # optional, >= 0: stop this long after the first break
+//
+//   [units]                        # optional: the physical chain behind the numbers
+//   mass = 0.05           # m in kg (required in [units]), > 0
+//   stiffness = 200.0     # K in N/m (required in [units]), > 0
+//   length = 0.01         # l in m (required in [units]), > 0
+//   friction = 0.0        # Gamma in kg/s, >= 0; when given it defines chain.gamma =
+//                         # Gamma / (2 m omega0) (both given: they must agree to 1e-12)
+//   input = "dimensionless"  # or "si": the scene's numbers are seconds and newtons
+//
+//   [render]                       # reserved for the renderer: width, height, fps, speed,
+//                                  # view, overlay are accepted and kept as raw TOML text
+//
+// ==== Units ================================================================================
+// Eq. (dimless) uses tau = omega0 t, psi = y / l, f = F / (K l), gamma = Gamma / (2 m omega0)
+// with omega0 = sqrt(K / m). With input = "si" the reader converts (scene_units.h):
+//   times  dt, t_end, after_break, t0, period, impulse times, table tau column:  tau = omega0 t
+//   forces threshold, amplitude, table f column:                                f = F / (K l)
+//   beta (N/s):                                  beta = b / (K l omega0)
+//   impulse strengths (N s): the integral of f dtau = omega0 / (K l) * integral of F dt,
+//                            so s = S omega0 / (K l) (bead N's kick S/m in units of l omega0)
+//   expr: t is seconds and the value newtons; the text is rewritten to the dimensionless form.
+// Without [units], or with input = "dimensionless", every number is already dimensionless.
+//
+// ==== Errors ===============================================================================
+// Every user mistake throws SceneError "file:line:column: what is wrong; how to fix it",
+// with the position of the offending value (or of its table when a key is missing), or
+// "--set KEY=VALUE: ..." when an override supplied the value.
+#include "scene/scene.h"
+
+#include <toml++/toml.h>
+
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "scene/scene_reader.h"
+#include "scene/scene_sections.h"
+#include "scene/scene_units.h"
+
+namespace cb {
+
+namespace {
+
+std::string trim(const std::string& s) {
+  const auto first = s.find_first_not_of(" \t\r\n");
+  if (first == std::string::npos) return "";
+  const auto last = s.find_last_not_of(" \t\r\n");
+  return s.substr(first, last - first + 1);
+}
+
+// "chain.gamma" or "title": names of letters, digits and '_', at most one dot.
+bool valid_key_text(const std::string& key) {
+  std::size_t dots = 0;
+  for (std::size_t i = 0; i < key.size(); ++i) {
+    const char c = key[i];
+    if (c == '.') {
+      if (i == 0 || i + 1 == key.size() || key[i - 1] == '.') return false;
+      ++dots;
+    } else if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') {
+      return false;
+    }
+  }
+  return dots <= 1;
+}
+
+}  // namespace
+
+Override parse_override(const std::string& text) {
+  const std::string prefix = "--set " + text + ": ";
+  const auto eq = text.find('=');
+  if (eq == std::string::npos)
+    throw SceneError(prefix + "expected KEY=VALUE; write e.g. --set chain.gamma=0.01");
+  Override o{trim(text.substr(0, eq)), trim(text.substr(eq + 1))};
+  if (o.key.empty())
+    throw SceneError(prefix + "the key before '=' is missing; write e.g. --set chain.gamma" +
+                     text.substr(eq));
+  if (!valid_key_text(o.key))
+    throw SceneError(prefix + "'" + o.key +
+                     "' is not a key; write section.key=VALUE, e.g. --set chain.gamma=0.01");
+  if (o.value.empty())
+    throw SceneError(prefix + "the value after '=' is missing; write e.g. --set " + o.key +
+                     "=VALUE (a number, true/false, [a, b] or a word)");
+  return o;
+}
+
+SceneDesc parse_scene(const std::string& text, const std::string& path,
+                      const std::vector<Override>& overrides) {
+  toml::table root;
+  try {
+    root = toml::parse(text, path);
+  } catch (const toml::parse_error& e) {
+    const auto& at = e.source().begin;
+    throw SceneError(path + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) +
+                     ": TOML syntax error: " + std::string(e.description()) +
+                     "; check the syntax there: strings need double quotes (type = \"ramp\"), "
+                     "sections are [name], arrays are [1, 2]");
+  }
+  scene_detail::SceneReader r(path, std::move(root));
+  for (const Override& o : overrides) r.apply(o);
+  r.check_known_keys();
+
+  SceneDesc d;
+  d.path = path;
+  const std::filesystem::path file(path);
+  d.name = file.stem().string();
+  d.title = r.string("", "title").value_or(d.name);
+  // Units first: they decide how every other number is read.
+  d.units = scene_detail::read_units(r);
+  const scene_detail::Conversion c = scene_detail::conversion_for(d.units);
+  d.chain = scene_detail::read_chain(r, d.units, c);
+  d.drive = scene_detail::read_drive(r, c, file.parent_path().string());
+  d.integrator = scene_detail::read_integrator(r, c, d.chain);
+  d.render = r.raw_section("render");
+  return d;
+}
+
+SceneDesc load_scene(const std::string& path, const std::vector<Override>& overrides) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in || std::filesystem::is_directory(path))
+    throw SceneError(path +
+                     ": cannot read the scene file; check the path (scenes/*.toml "
+                     "ship with chainbreak)");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_scene(text.str(), path, overrides);
+}
+
+}  // namespace cb

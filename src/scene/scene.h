@@ -4,6 +4,7 @@
 // can make is reported as "file:line:column: what is wrong, and how to fix it".
 #pragma once
 
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -22,9 +23,9 @@ struct Units {
   double length = 1.0;     // l
   double friction = 0.0;   // Gamma
   bool si_input = false;
-  double omega0() const;        // sqrt(K/m): tau = omega0 t
-  double force_scale() const;   // K l: F = f K l
-  double gamma() const;         // Gamma / (2 m omega0)
+  double omega0() const;       // sqrt(K/m): tau = omega0 t
+  double force_scale() const;  // K l: F = f K l
+  double gamma() const;        // Gamma / (2 m omega0)
 };
 
 struct IntegratorDesc {
@@ -34,13 +35,16 @@ struct IntegratorDesc {
 };
 
 struct SceneDesc {
-  std::string path;   // as given
-  std::string name;   // file stem, used for output names
+  std::string path;  // as given
+  std::string name;  // file stem, used for output names
   std::string title;
   ChainParams chain;
   DriveDesc drive;
   IntegratorDesc integrator;
   std::optional<Units> units;
+  // [render] as written (key -> TOML text of the value), kept for the renderer; the keys are
+  // checked against the schema so that typos fail now rather than when the renderer lands.
+  std::map<std::string, std::string> render;
 };
 
 struct SceneError : std::runtime_error {

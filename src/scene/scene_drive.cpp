@@ -1,0 +1,132 @@
+// [drive]: which force pulls bead N, validated and converted to f(tau) of Eq. (dimless).
+//
+// Every key present is type-checked whatever the drive type, but only the type's own keys
+// are required: `--set drive.type=step` on a ramp scene must not trip over its beta.
+#include <filesystem>
+
+#include "scene/scene_sections.h"
+
+namespace cb::scene_detail {
+
+namespace {
+
+const std::vector<std::string_view> kDriveTypes = {"step",     "ramp",  "sine",
+                                                   "impulses", "table", "expr"};
+
+std::string needs(const char* type, const char* what) {
+  return std::string("(type = \"") + type + "\" needs " + what + ")";
+}
+
+void read_impulses(const SceneReader& r, const Conversion& c, DriveDesc& d) {
+  const auto times = r.numbers("drive", "times");
+  if (!times) r.fail_missing("drive", "times", needs("impulses", "the kick times"));
+  if (times->empty())
+    r.fail("drive", "times",
+           "drive.times is empty; give at least one kick time, e.g. times = [0.0, 30.0]");
+  for (std::size_t i = 0; i < times->size(); ++i)
+    if ((*times)[i] < 0.0)
+      r.fail("drive", "times",
+             "drive.times[" + std::to_string(i) + "] = " + format_exact((*times)[i]) +
+                 " is negative; kick times count from t0, so use values >= 0 (or move t0)");
+  const auto strengths = r.numbers("drive", "strengths");
+  if (strengths && strengths->size() != times->size())
+    r.fail("drive", "strengths",
+           "drive.strengths has " + std::to_string(strengths->size()) +
+               " entries but drive.times has " + std::to_string(times->size()) +
+               "; give one strength per kick time, or remove strengths for kicks of 1");
+  for (double t : *times) d.times.push_back(c.time(t));
+  // Kicks default to strength 1 in the scene's units (1 N s for SI input), so with SI input
+  // the converted defaults are written out.
+  if (strengths || c.si)
+    for (std::size_t i = 0; i < times->size(); ++i)
+      d.strengths.push_back(c.impulse(strengths ? (*strengths)[i] : 1.0));
+}
+
+void read_table(const SceneReader& r, const Conversion& c, const std::string& scene_dir,
+                DriveDesc& d) {
+  d.table_file = r.require_string("drive", "file", needs("table", "a CSV file of tau,f rows"));
+  // Relative to the scene file, so a scene and its data move together.
+  const std::filesystem::path file =
+      std::filesystem::path(scene_dir) / std::filesystem::path(d.table_file);
+  try {
+    load_drive_table(d, file.string());
+  } catch (const DriveError& e) {
+    // The DriveError names the resolved path, the row and what to fix.
+    r.fail("drive", "file", "cannot use drive.file = \"" + d.table_file + "\": " + e.what());
+  }
+  for (auto& [t, f] : d.table) {
+    t = c.time(t);
+    f = c.force(f);
+  }
+}
+
+void read_expr(const SceneReader& r, const Conversion& c, DriveDesc& d) {
+  d.expr = r.require_string("drive", "expr", needs("expr", "an expression in t"));
+  // Compile now so that a typo is reported against the scene, not mid-run.
+  try {
+    make_forcing(d);
+  } catch (const DriveError& e) {
+    r.fail("drive", "expr", std::string(e.what()));
+  }
+  if (c.si) d.expr = expr_to_dimensionless(d.expr, c);
+}
+
+}  // namespace
+
+DriveDesc read_drive(const SceneReader& r, const Conversion& c, const std::string& scene_dir) {
+  DriveDesc d;
+  const std::string type =
+      r.require_string("drive", "type", "(one of step, ramp, sine, impulses, table, expr)");
+  if (!parse_drive_type(type, d.type))
+    r.fail("drive", "type",
+           "unknown drive type '" + type + "'; " + suggest(type, kDriveTypes, "\"", "\""));
+
+  // Read (and so type-check) every key up front, required or not.
+  const auto amplitude = r.number("drive", "amplitude");
+  const auto beta = r.number("drive", "beta");
+  const auto period = r.number("drive", "period");
+  const auto t0 = r.number("drive", "t0");
+  if (period && *period <= 0.0)
+    r.fail("drive", "period",
+           "drive.period must be > 0, got " + format_exact(*period) +
+               "; write e.g. period = 120.0 (4N resonates with the chain's slowest mode)");
+  if (t0 && *t0 < 0.0)
+    r.fail("drive", "t0",
+           "drive.t0 must be >= 0 (the chain starts at rest at tau = 0), got " + format_exact(*t0) +
+               "; write e.g. t0 = 0.0");
+  d.t0 = c.time(t0.value_or(0.0));
+
+  switch (d.type) {
+    case DriveType::Step:
+      if (!amplitude) r.fail_missing("drive", "amplitude", needs("step", "the step's height"));
+      d.amplitude = c.force(*amplitude);
+      break;
+    case DriveType::Ramp:
+      if (!beta) r.fail_missing("drive", "beta", needs("ramp", "the slope of f = beta tau"));
+      d.beta = c.slope(*beta);
+      break;
+    case DriveType::Sine:
+      if (!amplitude) r.fail_missing("drive", "amplitude", needs("sine", "the amplitude"));
+      if (!period) r.fail_missing("drive", "period", needs("sine", "the period"));
+      d.amplitude = c.force(*amplitude);
+      d.period = c.time(*period);
+      break;
+    case DriveType::Impulses:
+      read_impulses(r, c, d);
+      break;
+    case DriveType::Table:
+      read_table(r, c, scene_dir, d);
+      break;
+    case DriveType::Expr:
+      read_expr(r, c, d);
+      break;
+  }
+  // Keys of other drive types are type-checked above but otherwise ignored.
+  r.numbers("drive", "times");
+  r.numbers("drive", "strengths");
+  r.string("drive", "file");
+  r.string("drive", "expr");
+  return d;
+}
+
+}  // namespace cb::scene_detail

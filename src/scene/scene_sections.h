@@ -1,0 +1,23 @@
+// Internal to src/scene: one reader per section of the schema (documented in scene.cpp).
+// Each validates its section and returns it in the dimensionless form of Eq. (dimless).
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "drive/drive.h"
+#include "physics/chain.h"
+#include "scene/scene.h"
+#include "scene/scene_reader.h"
+#include "scene/scene_units.h"
+
+namespace cb::scene_detail {
+
+std::optional<Units> read_units(const SceneReader& r);
+// Also settles chain.gamma against units.friction and fills in the other one.
+ChainParams read_chain(const SceneReader& r, std::optional<Units>& units, const Conversion& c);
+// scene_dir: where drive.file is looked up when it is a relative path.
+DriveDesc read_drive(const SceneReader& r, const Conversion& c, const std::string& scene_dir);
+IntegratorDesc read_integrator(const SceneReader& r, const Conversion& c, const ChainParams& chain);
+
+}  // namespace cb::scene_detail
