@@ -230,7 +230,9 @@ int run_formula(const RunOptions& o, const SceneDesc& scene, CsvTable* csv) {
   r.steps = last;
   r.tau_end = static_cast<double>(last) * dt;
   std::optional<FirstBreak> first;
-  if (exact && scene.chain.breakable()) first = exact_first_break(scene.chain, scene.drive, r.tau_end);
+  // The exact first break needs closed forms: not available for an expr drive.
+  if (exact && scene.chain.breakable() && scene.drive.type != DriveType::Expr)
+    first = exact_first_break(scene.chain, scene.drive, r.tau_end);
   return finish(o, scene, r, first);
 }
 

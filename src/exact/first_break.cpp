@@ -1,1 +1,80 @@
-// stub: being written
+#include "exact/first_break.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <numeric>
+#include <stdexcept>
+
+#include "exact/break_scan.h"
+#include "exact/exact_chain.h"
+
+namespace cb {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Sampling interval of the sweep. Its only effect is speed: the bound between samples is
+// rigorous, but its slack grows as h^2, so shorter steps mean fewer refinements. 0.25 keeps
+// Omega h <= 1/2 for every mode; a fast sine asks for 16 samples per period.
+double scan_step(const detail::DriveTerms& terms) {
+  double step = 0.25;
+  if (terms.has_sine && terms.sine.nu > 0.0)
+    step = std::min(step, 2.0 * std::numbers::pi / terms.sine.nu / 16.0);
+  return step;
+}
+
+}  // namespace
+
+FirstBreak exact_first_break(const ChainParams& chain, const DriveDesc& drive, double t_end) {
+  if (!chain.breakable()) return {};
+  assert(chain.threshold > 0.0 && std::isfinite(t_end));
+  if (drive.type == DriveType::Expr)
+    throw std::invalid_argument(
+        "the exact first break needs a drive with a closed form (step, ramp, sine, impulses or "
+        "table), not an expr drive: use the rk4 solver for it");
+  const ExactChain exact(chain.beads, chain.gamma, drive);
+  // The string breaks when f itself reaches phi_c; a tie goes to the string, as in the
+  // integrator, so only crossings strictly before it count.
+  const double string_tau =
+      chain.pull_string ? exact.drive_terms().first_time_at_least(chain.threshold) : kInf;
+  const double limit = std::min(t_end, string_tau);
+  detail::BreakScan scan(exact, chain.break_on, limit, scan_step(exact.drive_terms()));
+  const FirstBreak spring = scan.first(chain.threshold, limit);
+  if (spring.broke && spring.tau < string_tau) return spring;
+  if (string_tau <= t_end) return {true, 0, string_tau};
+  return {};
+}
+
+// Eq. (rescale2): a ramp beta tau with threshold phi_c is the unit ramp with zeta_c = phi_c / beta.
+// Thresholds are visited in increasing order so that one sweep serves them all.
+std::vector<FirstBreak> breaking_map(int beads, double gamma, BreakMode mode,
+                                     const std::vector<double>& zeta_c, double t_end) {
+  DriveDesc ramp;
+  ramp.type = DriveType::Ramp;
+  ramp.beta = 1.0;
+  const ExactChain exact(beads, gamma, ramp);
+  detail::BreakScan scan(exact, mode, t_end, scan_step(exact.drive_terms()));
+  std::vector<std::size_t> order(zeta_c.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return zeta_c[a] < zeta_c[b]; });
+  std::vector<FirstBreak> out(zeta_c.size());
+  for (std::size_t i : order) out[i] = scan.first(zeta_c[i], t_end);
+  return out;
+}
+
+// Eq. (heald) with T_c = 1: T_down = beta tau reaches 1 at tau = 1/beta, when
+// T_up = 1 - beta sin(1/beta); the lower string is first iff sin(1/beta) > 0.
+std::vector<BetaWindow> one_body_jerk_windows(int count) {
+  std::vector<BetaWindow> out;
+  for (int m = 0; m < count; ++m)
+    out.push_back(
+        {1.0 / ((2 * m + 1) * std::numbers::pi), m == 0 ? kInf : 1.0 / (2 * m * std::numbers::pi)});
+  return out;
+}
+
+}  // namespace cb
