@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <sys/wait.h>
+#include <csignal>
 #include <unistd.h>
 
 #include <cstdio>
@@ -134,4 +135,28 @@ TEST_CASE("sweep rejects a malformed --vary with a usage hint", "[cli]") {
                             " --vary chain.threshold=5:200 --csv " + (temp_dir() / "x.csv").string());
   CHECK(r.status == 2);
   CHECK_THAT(r.err, Catch::Contains("KEY=LO:HI:COUNT"));
+}
+
+TEST_CASE("SIGINT stops a run with status 130 and no CSV", "[cli]") {
+  const fs::path csv = temp_dir() / "interrupted.csv";
+  const pid_t pid = ::fork();
+  REQUIRE(pid >= 0);
+  if (pid == 0) {
+    const std::string scene_path = scene("step_pulse.toml");
+    ::freopen("/dev/null", "w", stdout);
+    ::freopen("/dev/null", "w", stderr);
+    ::execl(CHAINBREAK_EXE, CHAINBREAK_EXE, "run", scene_path.c_str(), "--set",
+            "integrator.t_end=1e7", "--csv", csv.c_str(), "--quiet", static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  ::usleep(500 * 1000);  // long enough to be integrating, far from done (1e9 steps)
+  ::kill(pid, SIGINT);
+  int raw = 0;
+  REQUIRE(::waitpid(pid, &raw, 0) == pid);
+  REQUIRE(WIFEXITED(raw));
+  CHECK(WEXITSTATUS(raw) == 130);
+  CHECK_FALSE(fs::exists(csv));
+  // Nor a leftover temporary file in the folder.
+  for (const auto& entry : fs::directory_iterator(csv.parent_path()))
+    CHECK(entry.path().filename().string().find("interrupted.csv") == std::string::npos);
 }
