@@ -1,7 +1,6 @@
 // Breaking, Eq. (break): where the integrator locates a crossing, what a broken spring does,
 // and the one-body pull-or-jerk experiment of the paper's introduction, Eq. (heald).
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 #include "drive/drive.h"
@@ -19,7 +18,8 @@ cb::DriveDesc ramp(double beta) {
 }
 
 // Runs until the first break (or max_tau) and returns it; spring -1 when nothing broke.
-cb::BreakEvent first_break(const cb::ChainParams& p, const cb::DriveDesc& d, double dt, double max_tau) {
+cb::BreakEvent first_break(const cb::ChainParams& p, const cb::DriveDesc& d, double dt,
+                           double max_tau) {
   cb::Integrator sim(p, cb::make_forcing(d), {dt, 1});
   const auto last = std::llround(max_tau / dt);
   while (sim.state().breaks.empty() && sim.state().step < last) REQUIRE(sim.step());
@@ -84,7 +84,8 @@ TEST_CASE("The windows of one_body_jerk_windows agree with the integrator", "[br
   }
 }
 
-TEST_CASE("The located first break matches the exact solution within 1e-6 at dt = 0.01", "[breaking]") {
+TEST_CASE("The located first break matches the exact solution within 1e-6 at dt = 0.01",
+          "[breaking]") {
   // N = 30 ramp chains: the exact first break comes from root finding on the exact modal
   // solution (src/exact), the simulated one from RK4 + Hermite location.
   for (double gamma : {0.0, 0.01}) {

@@ -1,11 +1,10 @@
 // The command line as a user meets it: the run and sweep contracts (CSV headers, JSON
 // summary, exit codes), sharding, and that failures leave no file behind.
-#include <catch2/catch.hpp>
-
 #include <sys/wait.h>
-#include <csignal>
 #include <unistd.h>
 
+#include <catch2/catch.hpp>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -49,7 +48,9 @@ Result chainbreak(const std::string& args) {
   return r;
 }
 
-std::string scene(const std::string& name) { return std::string(CHAINBREAK_SCENES) + "/" + name; }
+std::string scene(const std::string& name) {
+  return std::string(CHAINBREAK_SCENES) + "/" + name;
+}
 
 std::vector<std::string> lines(const std::string& text) {
   std::vector<std::string> out;
@@ -73,22 +74,28 @@ TEST_CASE("run writes the CSV contract and a JSON summary", "[cli]") {
   CHECK(summary["energy_balance_error"].get<double>() < 1e-9);
   const auto rows = lines(slurp(csv));
   REQUIRE(rows.size() == 1 + 21);  // header + steps 0, 10, ..., 200
-  CHECK(rows[0] == "tau,f,energy,kinetic,potential,phi_1,phi_2,phi_3,phi_4,psi_1,psi_2,psi_3,psi_4");
+  CHECK(rows[0] ==
+        "tau,f,energy,kinetic,potential,phi_1,phi_2,phi_3,phi_4,psi_1,psi_2,psi_3,psi_4");
   CHECK(rows[1].rfind("0,0,0,0,0,", 0) == 0);  // at rest at tau = 0, ramp f(0) = 0
   CHECK(rows[2].rfind("0.1,", 0) == 0);        // tau = 10 steps * 0.01, printed exactly
 }
 
 TEST_CASE("run --solver exact and rk4 agree on the CSV", "[cli]") {
   const fs::path a = temp_dir() / "rk4.csv", b = temp_dir() / "exact.csv";
-  const std::string common = " --set integrator.t_end=40 --set chain.threshold=1e9 --every 1000 --quiet";
-  REQUIRE(chainbreak("run " + scene("friction.toml") + common + " --csv " + a.string()).status == 0);
-  REQUIRE(chainbreak("run " + scene("friction.toml") + common + " --solver exact --csv " + b.string())
-              .status == 0);
+  const std::string common =
+      " --set integrator.t_end=40 --set chain.threshold=1e9 --every 1000 --quiet";
+  REQUIRE(chainbreak("run " + scene("friction.toml") + common + " --csv " + a.string()).status ==
+          0);
+  REQUIRE(
+      chainbreak("run " + scene("friction.toml") + common + " --solver exact --csv " + b.string())
+          .status == 0);
   const auto ra = lines(slurp(a)), rb = lines(slurp(b));
   REQUIRE(ra.size() == rb.size());
   REQUIRE(ra.size() == 6);
   // Last row, phi_N column: RK4 at dt = 0.01 vs the exact modal solution, 1e-7 + 1e-7 rel.
-  auto last_value = [](const std::string& row) { return std::stod(row.substr(row.rfind(',') + 1)); };
+  auto last_value = [](const std::string& row) {
+    return std::stod(row.substr(row.rfind(',') + 1));
+  };
   const double x = last_value(ra.back()), y = last_value(rb.back());
   CHECK(std::abs(x - y) <= 1e-7 + 1e-7 * std::abs(y));
 }
@@ -131,8 +138,9 @@ TEST_CASE("sweep shards concatenate to the full table", "[cli]") {
 }
 
 TEST_CASE("sweep rejects a malformed --vary with a usage hint", "[cli]") {
-  const auto r = chainbreak("sweep " + scene("anomalous_breaking.toml") +
-                            " --vary chain.threshold=5:200 --csv " + (temp_dir() / "x.csv").string());
+  const auto r =
+      chainbreak("sweep " + scene("anomalous_breaking.toml") +
+                 " --vary chain.threshold=5:200 --csv " + (temp_dir() / "x.csv").string());
   CHECK(r.status == 2);
   CHECK_THAT(r.err, Catch::Contains("KEY=LO:HI:COUNT"));
 }

@@ -2,7 +2,6 @@
 // (exact modal expansion in 160-digit arithmetic, copied into tests/data), and its own
 // invariants: fourth-order convergence, the energy books, thread independence.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -26,7 +25,9 @@ cb::ChainParams chain(int n, double gamma) {
   return p;
 }
 
-std::int64_t steps_to(double tau, double dt) { return std::llround(tau / dt); }
+std::int64_t steps_to(double tau, double dt) {
+  return std::llround(tau / dt);
+}
 
 // |x - ref| <= atol + rtol |ref|, the comparison the reference README prescribes.
 void check_close(double x, double ref, double atol, double rtol) {

@@ -10,7 +10,9 @@ namespace cb {
 
 namespace {
 
-std::string reason(int err) { return std::strerror(err); }
+std::string reason(int err) {
+  return std::strerror(err);
+}
 
 }  // namespace
 
@@ -18,11 +20,13 @@ OutputFile::OutputFile(std::string path) : path_(std::move(path)) {
   namespace fs = std::filesystem;
   const fs::path target(path_);
   if (fs::is_directory(target))
-    throw OutputError(path_ + ": is a directory; give a file name, e.g. " + (target / "out.csv").string());
+    throw OutputError(path_ + ": is a directory; give a file name, e.g. " +
+                      (target / "out.csv").string());
   const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
   if (!fs::is_directory(dir))
     throw OutputError(path_ + ": the directory " + dir.string() +
-                      " does not exist; create it (mkdir -p " + dir.string() + ") or choose another path");
+                      " does not exist; create it (mkdir -p " + dir.string() +
+                      ") or choose another path");
   // A hidden name in the same directory, so that the final rename cannot cross filesystems.
   std::string hidden(".");
   hidden.append(target.filename().string()).append(".part-").append(std::to_string(::getpid()));
@@ -51,10 +55,12 @@ void OutputFile::commit() {
   std::fclose(file_);
   file_ = nullptr;
   if (!flushed)
-    throw OutputError(path_ + ": writing failed (" + reason(err) +
-                      "); nothing was written under that name. Free some space or choose another directory");
+    throw OutputError(
+        path_ + ": writing failed (" + reason(err) +
+        "); nothing was written under that name. Free some space or choose another directory");
   if (std::rename(temp_.c_str(), path_.c_str()) != 0)
-    throw OutputError(path_ + ": cannot rename the finished file into place (" + reason(errno) + ")");
+    throw OutputError(path_ + ": cannot rename the finished file into place (" + reason(errno) +
+                      ")");
   temp_.clear();
 }
 

@@ -38,8 +38,9 @@ class CsvTable {
     file_.write(header + "\n");
   }
   void row(const Sample& s) {
-    for (double v : {s.tau, s.f, per_particle(s.energy.total(), beads_),
-                     per_particle(s.energy.kinetic, beads_), per_particle(s.energy.potential, beads_)}) {
+    for (double v :
+         {s.tau, s.f, per_particle(s.energy.total(), beads_),
+          per_particle(s.energy.kinetic, beads_), per_particle(s.energy.potential, beads_)}) {
       append_number(buffer_, v);
       buffer_ += ',';
     }
@@ -92,9 +93,11 @@ struct RunResult {
 
 int finish(const RunOptions& o, const SceneDesc& scene, const RunResult& r,
            std::optional<FirstBreak> exact_break) {
-  std::string j = "{\"scene\":" + json_string(scene.name) + ",\"title\":" + json_string(scene.title);
+  std::string j =
+      "{\"scene\":" + json_string(scene.name) + ",\"title\":" + json_string(scene.title);
   j += ",\"solver\":" + json_string(o.solver);
-  j += ",\"beads\":" + std::to_string(scene.chain.beads) + ",\"gamma\":" + number_text(scene.chain.gamma);
+  j += ",\"beads\":" + std::to_string(scene.chain.beads) +
+       ",\"gamma\":" + number_text(scene.chain.gamma);
   j += ",\"threshold\":" +
        (scene.chain.breakable() ? number_text(scene.chain.threshold) : std::string("null"));
   j += ",\"drive\":" + json_string(drive_type_name(scene.drive.type));
@@ -121,8 +124,9 @@ int finish(const RunOptions& o, const SceneDesc& scene, const RunResult& r,
   }
   if (scene.units) {
     const Units& u = *scene.units;
-    j += ",\"units\":{\"omega0\":" + number_text(u.omega0()) + ",\"force_scale_newton\":" +
-         number_text(u.force_scale()) + ",\"t_end_seconds\":" + number_text(r.tau_end / u.omega0()) + "}";
+    j += ",\"units\":{\"omega0\":" + number_text(u.omega0()) +
+         ",\"force_scale_newton\":" + number_text(u.force_scale()) +
+         ",\"t_end_seconds\":" + number_text(r.tau_end / u.omega0()) + "}";
   }
   if (!o.csv.empty()) j += ",\"csv\":" + json_string(o.csv);
   std::printf("%s}\n", j.c_str());
@@ -156,7 +160,8 @@ int run_rk4(const RunOptions& o, const SceneDesc& scene, CsvTable* csv) {
     if (csv && sim.state().step % o.every == 0) write_row();
     if (sim.state().step >= last) break;
     if (g_interrupted) {
-      std::fprintf(stderr, "chainbreak: interrupted at tau = %g; no CSV written\n", sim.state().tau);
+      std::fprintf(stderr, "chainbreak: interrupted at tau = %g; no CSV written\n",
+                   sim.state().tau);
       return 130;
     }
     if (!sim.step()) {

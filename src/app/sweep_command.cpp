@@ -45,8 +45,8 @@ std::vector<std::string_view> split(std::string_view text, char sep) {
 }
 
 Vary parse_vary(const std::string& text) {
-  const std::string usage = "--vary " + text +
-                            ": expected KEY=LO:HI:COUNT[:log], e.g. --vary chain.threshold=1:300:420";
+  const std::string usage =
+      "--vary " + text + ": expected KEY=LO:HI:COUNT[:log], e.g. --vary chain.threshold=1:300:420";
   const auto eq = text.find('=');
   if (eq == std::string::npos || eq == 0) throw SceneError(usage);
   Vary v;
@@ -106,7 +106,9 @@ int sweep_command(const SweepOptions& o) {
     overrides.push_back({vary.key, number_text(vary.value(i))});
     scenes.push_back(load_scene(o.scene, overrides));
     if (o.solver == "exact" && scenes.back().drive.type == DriveType::Expr)
-      throw SceneError(o.scene + ": the exact first break has no closed form for an expr drive; use --solver rk4");
+      throw SceneError(
+          o.scene +
+          ": the exact first break has no closed form for an expr drive; use --solver rk4");
   }
   OutputFile out(o.csv);
   std::vector<FirstBreak> results(scenes.size());
@@ -130,7 +132,8 @@ int sweep_command(const SweepOptions& o) {
   {
     Progress progress("sweep " + vary.key, static_cast<double>(scenes.size()), o.quiet);
     std::vector<std::thread> pool;
-    for (int t = 1; t < std::min<int>(jobs, static_cast<int>(scenes.size())); ++t) pool.emplace_back(worker);
+    for (int t = 1; t < std::min<int>(jobs, static_cast<int>(scenes.size())); ++t)
+      pool.emplace_back(worker);
     std::thread watcher;
     if (!o.quiet)
       watcher = std::thread([&] {
@@ -166,8 +169,8 @@ int sweep_command(const SweepOptions& o) {
   out.write(text);
   out.commit();
   if (!o.quiet)
-    std::fprintf(stderr, "sweep: %zu values of %s written to %s\n", results.size(), vary.key.c_str(),
-                 o.csv.c_str());
+    std::fprintf(stderr, "sweep: %zu values of %s written to %s\n", results.size(),
+                 vary.key.c_str(), o.csv.c_str());
   return 0;
 }
 

@@ -13,12 +13,18 @@ namespace cb {
 
 const char* drive_type_name(DriveType type) {
   switch (type) {
-    case DriveType::Step: return "step";
-    case DriveType::Ramp: return "ramp";
-    case DriveType::Sine: return "sine";
-    case DriveType::Impulses: return "impulses";
-    case DriveType::Table: return "table";
-    case DriveType::Expr: return "expr";
+    case DriveType::Step:
+      return "step";
+    case DriveType::Ramp:
+      return "ramp";
+    case DriveType::Sine:
+      return "sine";
+    case DriveType::Impulses:
+      return "impulses";
+    case DriveType::Table:
+      return "table";
+    case DriveType::Expr:
+      return "expr";
   }
   return "?";
 }
@@ -54,12 +60,17 @@ double drive_value(const DriveDesc& d, double tau) {
   const double t = tau - d.t0;
   if (t < 0.0) return 0.0;
   switch (d.type) {
-    case DriveType::Step: return d.amplitude;
-    case DriveType::Ramp: return d.beta * t;
-    case DriveType::Sine: return d.amplitude * std::sin(2.0 * std::numbers::pi * t / d.period);
-    case DriveType::Table: return table_value(d.table, t);
+    case DriveType::Step:
+      return d.amplitude;
+    case DriveType::Ramp:
+      return d.beta * t;
+    case DriveType::Sine:
+      return d.amplitude * std::sin(2.0 * std::numbers::pi * t / d.period);
+    case DriveType::Table:
+      return table_value(d.table, t);
     case DriveType::Impulses:
-    case DriveType::Expr: return 0.0;
+    case DriveType::Expr:
+      return 0.0;
   }
   return 0.0;
 }
@@ -128,7 +139,9 @@ Forcing make_forcing(const DriveDesc& d) {
 
 void load_drive_table(DriveDesc& drive, const std::string& path) {
   std::ifstream in(path);
-  if (!in) throw DriveError(path + ": cannot read the drive table (check the path; it is relative to the scene file)");
+  if (!in)
+    throw DriveError(
+        path + ": cannot read the drive table (check the path; it is relative to the scene file)");
   std::vector<std::pair<double, double>> rows;
   std::string line;
   int line_no = 0;
@@ -146,8 +159,8 @@ void load_drive_table(DriveDesc& drive, const std::string& path) {
     }
     if (!rows.empty() && t <= rows.back().first)
       throw DriveError(path + ":" + std::to_string(line_no) +
-                       ": tau must increase from row to row (got " + std::to_string(t) +
-                       " after " + std::to_string(rows.back().first) + ")");
+                       ": tau must increase from row to row (got " + std::to_string(t) + " after " +
+                       std::to_string(rows.back().first) + ")");
     rows.emplace_back(t, f);
   }
   if (rows.size() < 2)

@@ -15,14 +15,14 @@ enum class DriveType { Step, Ramp, Sine, Impulses, Table, Expr };
 
 struct DriveDesc {
   DriveType type = DriveType::Ramp;
-  double amplitude = 1.0;         // step: A; sine: A
-  double beta = 1.0;              // ramp: f = beta (tau - t0)
-  double period = 120.0;          // sine: A sin(2 pi (tau - t0) / period)
-  std::vector<double> times;      // impulses: kick times relative to t0
-  std::vector<double> strengths;  // impulses: kick sizes; empty = all 1
-  std::string table_file;         // table: CSV of tau,f (as written in the scene)
+  double amplitude = 1.0;                        // step: A; sine: A
+  double beta = 1.0;                             // ramp: f = beta (tau - t0)
+  double period = 120.0;                         // sine: A sin(2 pi (tau - t0) / period)
+  std::vector<double> times;                     // impulses: kick times relative to t0
+  std::vector<double> strengths;                 // impulses: kick sizes; empty = all 1
+  std::string table_file;                        // table: CSV of tau,f (as written in the scene)
   std::vector<std::pair<double, double>> table;  // table: loaded points, tau ascending
-  std::string expr;               // expr: muParser expression in t (= tau - t0)
+  std::string expr;                              // expr: muParser expression in t (= tau - t0)
   double t0 = 0.0;
 };
 

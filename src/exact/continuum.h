@@ -5,11 +5,12 @@
 
 namespace cb {
 
-// H_N(r) = sum_n (-1)^n / N sin(kappa_n r) in closed form: (-1)^(N-1) sin(pi r) / (2N cos(pi r / 2N)).
+// H_N(r) = sum_n (-1)^n / N sin(kappa_n r) in closed form: (-1)^(N-1) sin(pi r) / (2N cos(pi r /
+// 2N)).
 double continuum_H(int N, double r);
 
-// Eq. (sum): phi_j(tau) ~ sum_nu (-1)^nu f[tau + j - (2nu+1)N] + sum_nu (-1)^nu f[tau - j - (2nu+1)N],
-// terms with a positive argument only. xi may be fractional.
+// Eq. (sum): phi_j(tau) ~ sum_nu (-1)^nu f[tau + j - (2nu+1)N] + sum_nu (-1)^nu f[tau - j -
+// (2nu+1)N], terms with a positive argument only. xi may be fractional.
 double continuum_phi_sum(int N, double xi, double tau, const std::function<double(double)>& f);
 
 // Eq. (example): psi(xi, tau) for a ramp beta*tau, the series truncated after `terms` terms.

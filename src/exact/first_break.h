@@ -13,7 +13,7 @@ namespace cb {
 
 struct FirstBreak {
   bool broke = false;
-  int spring = -1;    // 1..N, 0 = the pull string
+  int spring = -1;  // 1..N, 0 = the pull string
   double tau = 0.0;
 };
 

@@ -18,8 +18,8 @@ enum class BreakMode {
 };
 
 struct ChainParams {
-  int beads = 30;                                             // N
-  double gamma = 0.0;                                         // friction -2 gamma psi'
+  int beads = 30;                                              // N
+  double gamma = 0.0;                                          // friction -2 gamma psi'
   double threshold = std::numeric_limits<double>::infinity();  // phi_c; inf = unbreakable
   BreakMode break_on = BreakMode::Abs;
   bool pull_string = false;  // f acts through a massless string that breaks at f >= phi_c
@@ -28,22 +28,22 @@ struct ChainParams {
 };
 
 struct BreakEvent {
-  int spring = 0;      // 1..N, or 0 for the pull string
-  double tau = 0.0;    // located crossing time
+  int spring = 0;         // 1..N, or 0 for the pull string
+  double tau = 0.0;       // located crossing time
   std::int64_t step = 0;  // the step during which it broke (tau in (step-1, step] * dt)
 };
 
 struct ChainState {
-  std::vector<double> psi;      // psi_j, index j-1
-  std::vector<double> vel;      // d psi_j / d tau
-  std::vector<int> broken;      // broken springs, sorted ascending (1..N)
-  bool string_broken = false;   // the pull string (spring 0)
-  std::int64_t step = 0;        // time is an integer step count: tau = step * dt
+  std::vector<double> psi;     // psi_j, index j-1
+  std::vector<double> vel;     // d psi_j / d tau
+  std::vector<int> broken;     // broken springs, sorted ascending (1..N)
+  bool string_broken = false;  // the pull string (spring 0)
+  std::int64_t step = 0;       // time is an integer step count: tau = step * dt
   double tau = 0.0;
   // Energy bookkeeping (dimensionless units K l^2), integrated with the same RK4 stages.
-  double work = 0.0;         // work done by the drive, incl. impulse kicks
-  double dissipated = 0.0;   // energy removed by friction, int 2 gamma sum psi'^2
-  double break_loss = 0.0;   // elastic energy of springs at the moment they broke
+  double work = 0.0;        // work done by the drive, incl. impulse kicks
+  double dissipated = 0.0;  // energy removed by friction, int 2 gamma sum psi'^2
+  double break_loss = 0.0;  // elastic energy of springs at the moment they broke
   std::vector<BreakEvent> breaks;
 };
 

@@ -56,7 +56,8 @@ double hermite_first_crossing(double p0, double p1, double m0, double m1, double
     const double lo = cuts[k], hi = cuts[k + 1];
     double best = 2.0;
     if (up(lo) < 0.0 && up(hi) >= 0.0) best = bisect(up, lo, hi);
-    if (!stretch_only && down(lo) < 0.0 && down(hi) >= 0.0) best = std::min(best, bisect(down, lo, hi));
+    if (!stretch_only && down(lo) < 0.0 && down(hi) >= 0.0)
+      best = std::min(best, bisect(down, lo, hi));
     if (best <= 1.0) return best * h;
   }
   return -1.0;

@@ -28,7 +28,9 @@ struct Integrator::Impl {
   std::size_t next_kick = 0;
 
   Impl(int beads, int threads)
-      : psi_next(beads), vel_next(beads), pool(std::clamp(threads, 1, 1 + beads / kBeadsPerThread)) {
+      : psi_next(beads),
+        vel_next(beads),
+        pool(std::clamp(threads, 1, 1 + beads / kBeadsPerThread)) {
     const int workers = pool.size();
     scratch.resize(workers);
     outputs.resize(workers);
@@ -170,9 +172,9 @@ bool Integrator::advance_interval(double ta, double tb, bool end_is_breakpoint) 
     int spring = -1;
     for (const auto& out : impl_->outputs)
       for (const auto& c : out.candidates) {
-        const double theta = detail::hermite_first_crossing(c.p0, c.p1, c.m0, c.m1, tb - ta,
-                                                            params_.threshold,
-                                                            params_.break_on == BreakMode::Stretch);
+        const double theta =
+            detail::hermite_first_crossing(c.p0, c.p1, c.m0, c.m1, tb - ta, params_.threshold,
+                                           params_.break_on == BreakMode::Stretch);
         if (theta >= 0.0 && (ta + theta < first || (ta + theta == first && c.spring < spring))) {
           first = ta + theta;
           spring = c.spring;
@@ -180,8 +182,8 @@ bool Integrator::advance_interval(double ta, double tb, bool end_is_breakpoint) 
       }
     if (params_.pull_string && params_.breakable() && !state_.string_broken) {
       const double f_end = drive_at(end_is_breakpoint ? std::nextafter(tb, ta) : tb);
-      const double t = detail::first_time_at_least(forcing_.f ? forcing_.f : [](double) { return 0.0; },
-                                                   f_end, ta, tb, params_.threshold);
+      const double t = detail::first_time_at_least(
+          forcing_.f ? forcing_.f : [](double) { return 0.0; }, f_end, ta, tb, params_.threshold);
       if (t >= 0.0 && t <= first) {
         first = t;
         spring = 0;
@@ -214,7 +216,8 @@ void Integrator::break_spring(int spring, double tau) {
   }
   const double phi = extension(state_, spring);
   state_.break_loss += 0.5 * phi * phi;
-  state_.broken.insert(std::lower_bound(state_.broken.begin(), state_.broken.end(), spring), spring);
+  state_.broken.insert(std::lower_bound(state_.broken.begin(), state_.broken.end(), spring),
+                       spring);
 }
 
 void Integrator::report_non_finite(double tau) {
@@ -226,7 +229,8 @@ void Integrator::report_non_finite(double tau) {
         << " for this chain: use a smaller dt.";
   else
     msg << "The drive f(tau) = " << drive_at(tau)
-        << " may be growing without bound or not finite: check the drive's parameters or expression.";
+        << " may be growing without bound or not finite: check the drive's parameters or "
+           "expression.";
   error_ = msg.str();
 }
 
@@ -243,10 +247,13 @@ double rk4_stability_limit(int beads, double gamma) {
   auto stable = [&](double h) {
     const int samples = std::min(beads, 512);
     for (int s = 0; s < samples; ++s) {
-      const int n = samples == beads ? s : static_cast<int>((static_cast<long>(beads - 1) * s) / (samples - 1));
+      const int n = samples == beads
+                        ? s
+                        : static_cast<int>((static_cast<long>(beads - 1) * s) / (samples - 1));
       const double k = (n + 0.5) * M_PI / (beads + 0.5);
       const double omega = 2.0 * std::sin(0.5 * k);
-      const std::complex<double> root = std::sqrt(std::complex<double>(gamma * gamma - omega * omega, 0.0));
+      const std::complex<double> root =
+          std::sqrt(std::complex<double>(gamma * gamma - omega * omega, 0.0));
       for (const auto mu : {-gamma + root, -gamma - root}) {
         const std::complex<double> z = h * mu;
         const std::complex<double> r = 1.0 + z * (1.0 + z * (0.5 + z * (1.0 / 6.0 + z / 24.0)));

@@ -140,7 +140,8 @@ void rk4_tile(const StepInput& in, int a, int b, TileScratch& s, StepOutput& out
 }  // namespace
 
 void rk4_beads(const StepInput& in, int first, int last, TileScratch& scratch, StepOutput& out) {
-  for (int a = first; a < last; a += kTile) rk4_tile(in, a, std::min(a + kTile, last), scratch, out);
+  for (int a = first; a < last; a += kTile)
+    rk4_tile(in, a, std::min(a + kTile, last), scratch, out);
 }
 
 }  // namespace cb::detail

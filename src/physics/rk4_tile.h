@@ -26,9 +26,9 @@ struct StepInput {
   int beads = 0;
   double gamma = 0.0;
   double h = 0.0;
-  double force[3] = {0, 0, 0};      // f at the start, middle and end of the step
+  double force[3] = {0, 0, 0};               // f at the start, middle and end of the step
   const std::vector<int>* broken = nullptr;  // sorted broken springs
-  double threshold = 0.0;           // phi_c; <= 0 or inf disables the checks
+  double threshold = 0.0;                    // phi_c; <= 0 or inf disables the checks
   bool stretch_only = false;
 };
 
