@@ -138,11 +138,11 @@ bool Integrator::rk4(double ta, double tb, bool end_is_breakpoint) {
   });
   stage_dissipation_ = 0.0;
   stage_work_ = 0.0;
-  double probe = 0.0;
+  bool finite = true;
   const double weights[4] = {1.0, 2.0, 2.0, 1.0};
   const double forces[4] = {in.force[0], in.force[1], in.force[1], in.force[2]};
   for (const auto& out : im.outputs) {
-    probe += out.finite_probe;
+    finite = finite && out.finite;
     for (int s = 0; s < 4; ++s) {
       stage_dissipation_ += weights[s] * out.dissipation_rate[s];
       stage_work_ += weights[s] * forces[s] * out.end_velocity[s];
@@ -150,7 +150,7 @@ bool Integrator::rk4(double ta, double tb, bool end_is_breakpoint) {
   }
   stage_dissipation_ *= in.h / 6.0;
   stage_work_ *= in.h / 6.0;
-  return std::isfinite(probe);
+  return finite;
 }
 
 void Integrator::commit(double tb) {

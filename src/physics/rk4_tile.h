@@ -42,11 +42,11 @@ struct Candidate {
 struct StepOutput {
   double dissipation_rate[4] = {0, 0, 0, 0};  // 2 gamma sum v^2 at each stage
   double end_velocity[4] = {0, 0, 0, 0};      // v_N at each stage (for the drive's work)
-  double finite_probe = 0.0;                  // NaN if any new value is not finite
+  bool finite = true;                         // false if any new value is inf or NaN
   std::vector<Candidate> candidates;
   void reset() {
     for (int s = 0; s < 4; ++s) dissipation_rate[s] = end_velocity[s] = 0.0;
-    finite_probe = 0.0;
+    finite = true;
     candidates.clear();  // keeps its capacity: no allocation per step
   }
 };
@@ -54,6 +54,9 @@ struct StepOutput {
 // Scratch buffers for one worker.
 struct TileScratch {
   std::vector<double> x0, v0, xs, vs, xt, vt, sx, sv, kl, kr, fw;
+  std::vector<int> specials;      // local indices that need the general stencil, sorted
+  const double* x_new = nullptr;  // where the last tile's new state is (xs/vs or xt/vt)
+  const double* v_new = nullptr;
   TileScratch();
 };
 
