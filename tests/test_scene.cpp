@@ -96,7 +96,9 @@ TEST_CASE("a minimal scene reads back with the documented defaults", "[scene]") 
   CHECK(d.integrator.t_end == 400.0);
   CHECK_FALSE(d.integrator.after_break);
   CHECK_FALSE(d.units);
-  CHECK(d.render.empty());
+  // [render] absent: the defaults of RenderDesc.
+  CHECK(d.render.width == 1280);
+  CHECK(d.render.view == "longitudinal");
 }
 
 TEST_CASE("every key of the schema reads back", "[scene]") {
@@ -122,8 +124,8 @@ width = 640
 height = 360
 fps = 30
 speed = 2.0
-view = "chain"
-overlay = true
+view = "both"
+overlay = false
 )",
                                       "all.toml");
   CHECK(d.title == "All keys");
@@ -139,9 +141,12 @@ overlay = true
   CHECK(d.integrator.dt == 0.05);
   CHECK(d.integrator.t_end == 50.0);
   CHECK(d.integrator.after_break == 4.0);
-  REQUIRE(d.render.size() == 6);
-  CHECK(d.render.at("width") == "640");
-  CHECK(d.render.at("overlay") == "true");
+  CHECK(d.render.width == 640);
+  CHECK(d.render.height == 360);
+  CHECK(d.render.fps == 30.0);
+  CHECK(d.render.speed == 2.0);
+  CHECK(d.render.view == "both");
+  CHECK_FALSE(d.render.overlay);
 }
 
 TEST_CASE("step, sine and expr drives read back", "[scene]") {
@@ -547,7 +552,7 @@ TEST_CASE("overrides replace values before validation", "[scene]") {
   d = parse_scene(kBase, "t.toml",
                   {{"chain.beads", "5"}, {"chain.beads", "6"}, {"render.fps", "60"}});
   CHECK(d.chain.beads == 6);
-  CHECK(d.render.at("fps") == "60");
+  CHECK(d.render.fps == 60.0);
 }
 
 TEST_CASE("override mistakes are reported as --set KEY=VALUE", "[scene]") {
@@ -641,4 +646,22 @@ TEST_CASE("shipped breaking scenes break where their comments say", "[scene]") {
   CHECK(spring("ball_jerk.toml") == 0);       // sin(1) > 0: the lower string
   CHECK(spring("ball_pull.toml") == 1);       // sin(10) < 0: the upper string
   CHECK(spring("ball_anomalous.toml") == 0);  // sin(2.5 pi) = 1 > 0: the lower string
+}
+
+TEST_CASE("[render] values are checked with positions and hints", "[scene]") {
+  const std::string base = "[chain]\nbeads = 3\n[drive]\ntype = \"ramp\"\nbeta = 1\n"
+                           "[integrator]\ndt = 0.01\nt_end = 1\n[render]\n";
+  auto error_of = [&](const std::string& extra) {
+    try {
+      cb::parse_scene(base + extra, "r.toml");
+    } catch (const cb::SceneError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  CHECK_THAT(error_of("view = \"tranverse\"\n"), Catch::Contains("r.toml:10:") &&
+                                                      Catch::Contains("did you mean \"transverse\""));
+  CHECK_THAT(error_of("width = 8\n"), Catch::Contains("r.toml:10:") && Catch::Contains("16"));
+  CHECK_THAT(error_of("fps = -1\n"), Catch::Contains("render.fps must be > 0"));
+  CHECK_THAT(error_of("speed = \"fast\"\n"), Catch::Contains("speed"));
 }

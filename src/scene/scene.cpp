@@ -145,7 +145,7 @@ SceneDesc parse_scene(const std::string& text, const std::string& path,
   d.chain = scene_detail::read_chain(r, d.units, c);
   d.drive = scene_detail::read_drive(r, c, file.parent_path().string());
   d.integrator = scene_detail::read_integrator(r, c, d.chain);
-  d.render = r.raw_section("render");
+  d.render = read_render(r);
   return d;
 }
 

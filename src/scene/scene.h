@@ -4,7 +4,6 @@
 // can make is reported as "file:line:column: what is wrong, and how to fix it".
 #pragma once
 
-#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -34,6 +33,15 @@ struct IntegratorDesc {
   std::optional<double> after_break;  // stop this long after the first break
 };
 
+// [render]: how frames and videos of the scene look. Validated here; the renderer reads it.
+struct RenderDesc {
+  int width = 1280, height = 720;  // pixels
+  double fps = 30.0;               // frames per second of video
+  double speed = 10.0;             // tau per second of video
+  std::string view = "longitudinal";  // longitudinal | transverse | both
+  bool overlay = true;             // HUD and plots (a later issue)
+};
+
 struct SceneDesc {
   std::string path;  // as given
   std::string name;  // file stem, used for output names
@@ -42,9 +50,7 @@ struct SceneDesc {
   DriveDesc drive;
   IntegratorDesc integrator;
   std::optional<Units> units;
-  // [render] as written (key -> TOML text of the value), kept for the renderer; the keys are
-  // checked against the schema so that typos fail now rather than when the renderer lands.
-  std::map<std::string, std::string> render;
+  RenderDesc render;
 };
 
 struct SceneError : std::runtime_error {

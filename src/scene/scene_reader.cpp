@@ -44,13 +44,12 @@ constexpr KeySpec kSchema[] = {
     {"units", "length", Kind::Number, "length = 0.01"},
     {"units", "friction", Kind::Number, "friction = 0.0"},
     {"units", "input", Kind::String, "input = \"si\""},
-    // [render] belongs to the renderer (a later issue): names are checked, values kept raw.
-    {"render", "width", Kind::Raw, "width = 1280"},
-    {"render", "height", Kind::Raw, "height = 720"},
-    {"render", "fps", Kind::Raw, "fps = 30"},
-    {"render", "speed", Kind::Raw, "speed = 1.0"},
-    {"render", "view", Kind::Raw, "view = \"chain\""},
-    {"render", "overlay", Kind::Raw, "overlay = true"},
+    {"render", "width", Kind::Integer, "width = 1280"},
+    {"render", "height", Kind::Integer, "height = 720"},
+    {"render", "fps", Kind::Number, "fps = 30"},
+    {"render", "speed", Kind::Number, "speed = 10.0"},
+    {"render", "view", Kind::String, "view = \"longitudinal\""},
+    {"render", "overlay", Kind::Bool, "overlay = true"},
 };
 
 bool is_section(std::string_view name) {
@@ -102,8 +101,6 @@ const char* kind_name(Kind kind) {
       return "a string";
     case Kind::NumberArray:
       return "an array of numbers";
-    case Kind::Raw:
-      return "a value";
   }
   return "a value";
 }
@@ -390,18 +387,6 @@ std::optional<std::vector<double>> SceneReader::numbers(std::string_view section
            dotted(section, key) + "[" + std::to_string(i) + "] must be a finite number, got " +
                describe(e) + "; write e.g. " + std::string(find_key_spec(section, key)->example));
     out.push_back(*v);
-  }
-  return out;
-}
-
-std::map<std::string, std::string> SceneReader::raw_section(std::string_view section) const {
-  std::map<std::string, std::string> out;
-  const toml::table* table = root_.get_as<toml::table>(section);
-  if (!table) return out;
-  for (auto&& [key, value] : *table) {
-    std::ostringstream text;
-    value.visit([&](auto&& v) { text << v; });
-    out[std::string(key.str())] = text.str();
   }
   return out;
 }

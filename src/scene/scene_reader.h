@@ -22,7 +22,7 @@
 
 namespace cb::scene_detail {
 
-enum class Kind { Integer, Number, Bool, String, NumberArray, Raw };
+enum class Kind { Integer, Number, Bool, String, NumberArray };
 
 struct KeySpec {
   std::string_view section;  // "" for top-level keys
@@ -59,8 +59,6 @@ class SceneReader {
   std::optional<bool> boolean(std::string_view section, std::string_view key) const;
   std::optional<std::string> string(std::string_view section, std::string_view key) const;
   std::optional<std::vector<double>> numbers(std::string_view section, std::string_view key) const;
-  // [render] and other opaque sections: key -> TOML text of the value.
-  std::map<std::string, std::string> raw_section(std::string_view section) const;
 
   // Throws SceneError "<where section.key is>: <what>".
   [[noreturn]] void fail(std::string_view section, std::string_view key,

@@ -18,6 +18,7 @@ std::optional<Units> read_units(const SceneReader& r);
 ChainParams read_chain(const SceneReader& r, std::optional<Units>& units, const Conversion& c);
 // scene_dir: where drive.file is looked up when it is a relative path.
 DriveDesc read_drive(const SceneReader& r, const Conversion& c, const std::string& scene_dir);
+RenderDesc read_render(const SceneReader& r);
 IntegratorDesc read_integrator(const SceneReader& r, const Conversion& c, const ChainParams& chain);
 
 }  // namespace cb::scene_detail
