@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "app/frames.h"
 #include "scene/scene.h"
 
 namespace cb {
@@ -36,5 +37,26 @@ struct SweepOptions {
   bool quiet = false;
 };
 int sweep_command(const SweepOptions& options);
+
+struct SnapshotOptions {
+  std::string scene;
+  std::vector<Override> overrides;
+  std::string at;  // "T1,T2,..."
+  std::string out_dir = "renders";
+  FrameOptions frame;
+};
+int snapshot_command(const SnapshotOptions& options);
+
+struct RenderOptions {
+  std::string scene;
+  std::vector<Override> overrides;
+  std::string frames_dir;  // PNG sequence here
+  double fps = 0;          // 0: from the scene or -q
+  double speed = 0;        // tau per second of video; 0: from the scene
+  int threads = 1;
+  bool quiet = false;
+  FrameOptions frame;
+};
+int render_command(const RenderOptions& options);
 
 }  // namespace cb

@@ -4,8 +4,9 @@
 #include <cstdio>
 
 #include "app/commands.h"
-#include "app/output_file.h"
 #include "drive/drive.h"
+#include "gl/gl_context.h"
+#include "output/output_file.h"
 
 namespace cb {
 std::atomic<bool> g_interrupted{false};
@@ -15,6 +16,12 @@ namespace {
 
 void on_signal(int) {
   cb::g_interrupted = true;
+}
+
+// A mistake the user can fix (scene, options, output path): the message and status 2.
+int user_error(const char* message, const char* prefix) {
+  std::fprintf(stderr, "%s%s\n", prefix, message);
+  return 2;
 }
 
 std::vector<cb::Override> parse_overrides(const std::vector<std::string>& sets) {
@@ -68,6 +75,34 @@ int main(int argc, char** argv) {
   sweep_cmd->add_option("--csv", sweep.csv, "Output CSV")->required();
   sweep_cmd->add_flag("--quiet,-q", sweep.quiet, "No progress output");
 
+  // Options every frame-making command shares.
+  auto add_frame_options = [](CLI::App* cmd, cb::FrameOptions& f) {
+    cmd->add_option("--size", f.size, "Frame size WIDTHxHEIGHT, e.g. 1920x1080");
+    cmd->add_option("-q,--quality", f.quality, "Preset: l 854x480@15, m 1280x720@30, h 1920x1080@60, k 3840x2160@60");
+    cmd->add_option("--view", f.view, "longitudinal, transverse or both");
+    cmd->add_option("--gl", f.gl, "OpenGL backend: auto, osmesa or egl (default: $CHAINBREAK_GL or auto)");
+  };
+
+  cb::SnapshotOptions snap;
+  auto* snap_cmd = app.add_subcommand("snapshot", "PNG frames of a scene at exact times");
+  snap_cmd->add_option("scene", snap.scene, "Scene file (scenes/*.toml)")->required();
+  snap_cmd->add_option("--at", snap.at, "Times tau, comma-separated, e.g. --at 0,30,60.5")->required();
+  snap_cmd->add_option("-o,--out", snap.out_dir, "Folder for the PNGs (default renders)");
+  snap_cmd->add_option("--set", sets, "Override a scene key (repeatable)");
+  add_frame_options(snap_cmd, snap.frame);
+
+  cb::RenderOptions render;
+  auto* render_cmd = app.add_subcommand("render", "The whole run as frames");
+  render_cmd->add_option("scene", render.scene, "Scene file (scenes/*.toml)")->required();
+  render_cmd->add_option("--frames", render.frames_dir, "Write a zero-padded PNG sequence into this folder");
+  render_cmd->add_option("--fps", render.fps, "Frames per second of video")->check(CLI::Range(1.0, 240.0));
+  render_cmd->add_option("--speed", render.speed, "Simulation speed: tau per second of video")
+      ->check(CLI::PositiveNumber);
+  render_cmd->add_option("--threads", render.threads, "Threads for the integrator")->check(CLI::Range(1, 256));
+  render_cmd->add_option("--set", sets, "Override a scene key (repeatable)");
+  render_cmd->add_flag("--quiet", render.quiet, "No progress output");
+  add_frame_options(render_cmd, render.frame);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -76,21 +111,30 @@ int main(int argc, char** argv) {
   }
 
   try {
+    const auto overrides = parse_overrides(sets);
     if (run_cmd->parsed()) {
-      run.overrides = parse_overrides(sets);
+      run.overrides = overrides;
       return cb::run_command(run);
     }
-    sweep.overrides = parse_overrides(sets);
+    if (snap_cmd->parsed()) {
+      snap.overrides = overrides;
+      return cb::snapshot_command(snap);
+    }
+    if (render_cmd->parsed()) {
+      render.overrides = overrides;
+      return cb::render_command(render);
+    }
+    sweep.overrides = overrides;
     return cb::sweep_command(sweep);
   } catch (const cb::SceneError& e) {
-    std::fprintf(stderr, "%s\n", e.what());
-    return 2;
+    return user_error(e.what(), "");
   } catch (const cb::DriveError& e) {
-    std::fprintf(stderr, "%s\n", e.what());
-    return 2;
+    return user_error(e.what(), "");
   } catch (const cb::OutputError& e) {
+    return user_error(e.what(), "chainbreak: ");
+  } catch (const cb::GlError& e) {
     std::fprintf(stderr, "chainbreak: %s\n", e.what());
-    return 2;
+    return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "chainbreak: %s\n", e.what());
     return 1;

@@ -6,7 +6,7 @@
 
 #include "app/commands.h"
 #include "app/csv.h"
-#include "app/output_file.h"
+#include "output/output_file.h"
 #include "app/progress.h"
 #include "exact/continuum.h"
 #include "exact/exact_chain.h"

@@ -8,7 +8,7 @@
 
 #include "app/commands.h"
 #include "app/csv.h"
-#include "app/output_file.h"
+#include "output/output_file.h"
 #include "app/progress.h"
 #include "exact/first_break.h"
 #include "physics/integrator.h"

@@ -1,4 +1,4 @@
-#include "app/output_file.h"
+#include "output/output_file.h"
 
 #include <unistd.h>
 
