@@ -78,15 +78,18 @@ int main(int argc, char** argv) {
   // Options every frame-making command shares.
   auto add_frame_options = [](CLI::App* cmd, cb::FrameOptions& f) {
     cmd->add_option("--size", f.size, "Frame size WIDTHxHEIGHT, e.g. 1920x1080");
-    cmd->add_option("-q,--quality", f.quality, "Preset: l 854x480@15, m 1280x720@30, h 1920x1080@60, k 3840x2160@60");
+    cmd->add_option("-q,--quality", f.quality,
+                    "Preset: l 854x480@15, m 1280x720@30, h 1920x1080@60, k 3840x2160@60");
     cmd->add_option("--view", f.view, "longitudinal, transverse or both");
-    cmd->add_option("--gl", f.gl, "OpenGL backend: auto, osmesa or egl (default: $CHAINBREAK_GL or auto)");
+    cmd->add_option("--gl", f.gl,
+                    "OpenGL backend: auto, osmesa or egl (default: $CHAINBREAK_GL or auto)");
   };
 
   cb::SnapshotOptions snap;
   auto* snap_cmd = app.add_subcommand("snapshot", "PNG frames of a scene at exact times");
   snap_cmd->add_option("scene", snap.scene, "Scene file (scenes/*.toml)")->required();
-  snap_cmd->add_option("--at", snap.at, "Times tau, comma-separated, e.g. --at 0,30,60.5")->required();
+  snap_cmd->add_option("--at", snap.at, "Times tau, comma-separated, e.g. --at 0,30,60.5")
+      ->required();
   snap_cmd->add_option("-o,--out", snap.out_dir, "Folder for the PNGs (default renders)");
   snap_cmd->add_option("--set", sets, "Override a scene key (repeatable)");
   add_frame_options(snap_cmd, snap.frame);
@@ -94,11 +97,14 @@ int main(int argc, char** argv) {
   cb::RenderOptions render;
   auto* render_cmd = app.add_subcommand("render", "The whole run as frames");
   render_cmd->add_option("scene", render.scene, "Scene file (scenes/*.toml)")->required();
-  render_cmd->add_option("--frames", render.frames_dir, "Write a zero-padded PNG sequence into this folder");
-  render_cmd->add_option("--fps", render.fps, "Frames per second of video")->check(CLI::Range(1.0, 240.0));
+  render_cmd->add_option("--frames", render.frames_dir,
+                         "Write a zero-padded PNG sequence into this folder");
+  render_cmd->add_option("--fps", render.fps, "Frames per second of video")
+      ->check(CLI::Range(1.0, 240.0));
   render_cmd->add_option("--speed", render.speed, "Simulation speed: tau per second of video")
       ->check(CLI::PositiveNumber);
-  render_cmd->add_option("--threads", render.threads, "Threads for the integrator")->check(CLI::Range(1, 256));
+  render_cmd->add_option("--threads", render.threads, "Threads for the integrator")
+      ->check(CLI::Range(1, 256));
   render_cmd->add_option("--set", sets, "Override a scene key (repeatable)");
   render_cmd->add_flag("--quiet", render.quiet, "No progress output");
   add_frame_options(render_cmd, render.frame);

@@ -6,11 +6,11 @@
 
 #include "app/commands.h"
 #include "app/csv.h"
-#include "output/output_file.h"
 #include "app/progress.h"
 #include "exact/continuum.h"
 #include "exact/exact_chain.h"
 #include "exact/first_break.h"
+#include "output/output_file.h"
 #include "physics/energy.h"
 #include "physics/integrator.h"
 

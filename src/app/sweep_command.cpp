@@ -8,9 +8,9 @@
 
 #include "app/commands.h"
 #include "app/csv.h"
-#include "output/output_file.h"
 #include "app/progress.h"
 #include "exact/first_break.h"
+#include "output/output_file.h"
 #include "physics/integrator.h"
 
 namespace cb {

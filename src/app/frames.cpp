@@ -1,0 +1,107 @@
+#include "app/frames.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "physics/integrator.h"
+
+namespace cb {
+
+namespace {
+
+struct Preset {
+  const char* name;
+  int width, height;
+  double fps;
+};
+// As lecturers know them from Manim: low, medium, high, 4k.
+constexpr Preset kPresets[] = {
+    {"l", 854, 480, 15}, {"m", 1280, 720, 30}, {"h", 1920, 1080, 60}, {"k", 3840, 2160, 60}};
+
+}  // namespace
+
+RenderDesc frame_settings(const SceneDesc& scene, const FrameOptions& o) {
+  RenderDesc d = scene.render;
+  if (!o.quality.empty()) {
+    const Preset* found = nullptr;
+    for (const Preset& p : kPresets)
+      if (o.quality == p.name) found = &p;
+    if (!found)
+      throw SceneError("-q " + o.quality + ": expected l (854x480@15), m (1280x720@30), " +
+                       "h (1920x1080@60) or k (3840x2160@60)");
+    d.width = found->width;
+    d.height = found->height;
+    d.fps = found->fps;
+  }
+  if (!o.size.empty()) {
+    int w = 0, h = 0;
+    char tail = 0;
+    if (std::sscanf(o.size.c_str(), "%dx%d%c", &w, &h, &tail) != 2 || w < 16 || h < 16 ||
+        w > 16384 || h > 16384)
+      throw SceneError("--size " + o.size +
+                       ": expected WIDTHxHEIGHT in pixels, 16..16384, e.g. 1920x1080");
+    d.width = w;
+    d.height = h;
+  }
+  if (!o.view.empty()) {
+    View v;
+    if (!parse_view(o.view, v))
+      throw SceneError("--view " + o.view + ": expected longitudinal, transverse or both");
+    d.view = o.view;
+  }
+  return d;
+}
+
+RunExtent measure_run(const SceneDesc& scene, double tau_stop, double dt) {
+  Integrator sim(scene.chain, make_forcing(scene.drive), {dt, 1});
+  RunExtent e;
+  e.tau_stop = tau_stop;
+  double psi = 0.0, force = 0.0, strain = 0.0;
+  const auto last = static_cast<std::int64_t>(std::llround(tau_stop / dt));
+  bool broken = false;
+  while (sim.state().step < last) {
+    if (!sim.step()) throw std::runtime_error(sim.error());
+    if (!broken) {
+      const auto& x = sim.state().psi;
+      for (std::size_t i = 0; i < x.size(); ++i) {
+        psi = std::max(psi, std::abs(x[i]));
+        strain = std::max(strain, std::abs(x[i] - (i ? x[i - 1] : 0.0)));
+      }
+      force = std::max(force, std::abs(sim.force_now()));
+    }
+    if (!broken && !sim.state().breaks.empty()) {
+      broken = true;
+      if (scene.integrator.after_break)
+        e.tau_stop =
+            std::min(tau_stop, sim.state().breaks.front().tau + *scene.integrator.after_break);
+      if (e.tau_stop < tau_stop) break;
+    }
+  }
+  e.psi_range = std::max(psi, 1e-6);
+  e.force_range = std::max(force, 1e-6);
+  e.strain_range = std::max(strain, 1e-6);
+  return e;
+}
+
+SnapshotStyle snapshot_style(const SceneDesc& scene, const RenderDesc& frame,
+                             const RunExtent& extent) {
+  SnapshotStyle s;
+  s.width = frame.width;
+  s.height = frame.height;
+  parse_view(frame.view, s.view);
+  s.psi_range = extent.psi_range;
+  s.force_range = extent.force_range;
+  s.threshold = scene.chain.breakable() ? scene.chain.threshold : 0.0;
+  s.strain_range = scene.chain.breakable() ? scene.chain.threshold : extent.strain_range;
+  return s;
+}
+
+Canvas make_canvas(const FrameOptions& o, int width, int height) {
+  Canvas c;
+  c.context = create_gl_context(choose_gl_backend(o.gl));
+  c.renderer = std::make_unique<Renderer>(width, height);
+  return c;
+}
+
+}  // namespace cb

@@ -1,0 +1,49 @@
+// What `snapshot` and `render` share: the frame layout for a scene (size, view, the ranges
+// that fit the chain in the frame), and the GL context + renderer they draw with.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "gl/gl_context.h"
+#include "render/renderer.h"
+#include "scene/scene.h"
+#include "snapshot/snapshot.h"
+
+namespace cb {
+
+// Frame size and view as the user asked: scene [render], then -q preset, then --size/--view.
+struct FrameOptions {
+  std::string size;     // "WxH" or empty
+  std::string quality;  // l | m | h | k or empty
+  std::string view;     // longitudinal | transverse | both or empty
+  std::string gl;       // auto | osmesa | egl or empty (CHAINBREAK_GL)
+};
+
+// Applies the options to the scene's RenderDesc; throws SceneError for bad values.
+RenderDesc frame_settings(const SceneDesc& scene, const FrameOptions& options);
+
+// Runs the physics once up to tau_stop (or the first break plus after_break, whichever comes
+// first) and returns the layout that keeps the chain in the frame for the whole run: psi
+// and force ranges up to the first break (the detached part may then leave the frame).
+// Also reports where the run stops.
+struct RunExtent {
+  double psi_range = 1.0;
+  double force_range = 1.0;
+  double strain_range = 1.0;  // the largest |phi| (colour scale of an unbreakable chain)
+  double tau_stop = 0.0;
+};
+RunExtent measure_run(const SceneDesc& scene, double tau_stop, double dt);
+
+SnapshotStyle snapshot_style(const SceneDesc& scene, const RenderDesc& frame,
+                             const RunExtent& extent);
+
+// A current GL context and a renderer of the frame's size.
+struct Canvas {
+  std::unique_ptr<GlContext> context;
+  std::unique_ptr<Renderer> renderer;
+};
+Canvas make_canvas(const FrameOptions& options, int width, int height);
+
+}  // namespace cb

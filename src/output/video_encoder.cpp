@@ -1,0 +1,550 @@
+// The video encoder behind VideoEncoder (see the header for what it guarantees).
+//
+// Sections: formats and settings checks; libav helpers; Impl (opening, the worker thread,
+// encoding one frame, completing the file); the public functions.
+#include "output/video_encoder.h"
+
+extern "C" {
+#include <libavcodec/avcodec.h>
+#include <libavformat/avformat.h>
+#include <libavutil/opt.h>
+#include <libswscale/swscale.h>
+}
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cctype>
+#include <cerrno>
+#include <condition_variable>
+#include <cstdio>
+#include <cstring>
+#include <deque>
+#include <exception>
+#include <filesystem>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+#include "output/gif_palette.h"
+#include "output/output_file.h"
+
+namespace cb {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// ---- formats and settings checks ------------------------------------------------------------
+
+enum class Kind { mp4, webm, gif };
+
+struct Format {
+  Kind kind;
+  const char* extension;
+  const char* muxer;
+  const char* encoder;  // libavcodec encoder name
+  const char* codec;    // codec name for sidecars and codec_hint
+};
+
+constexpr Format kFormats[] = {
+    {Kind::mp4, ".mp4", "mp4", "libx264", "h264"},
+    {Kind::webm, ".webm", "webm", "libvpx-vp9", "vp9"},
+    {Kind::gif, ".gif", "gif", "gif", "gif"},
+};
+
+const Format& format_for(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  for (const Format& f : kFormats)
+    if (ext == f.extension) return f;
+  throw OutputError(path + ": unsupported video extension '" + ext +
+                    "'; use .mp4 (H.264), .webm (VP9) or .gif (animated GIF)");
+}
+
+constexpr const char* kX264Presets[] = {"ultrafast", "superfast", "veryfast", "faster",  "fast",
+                                        "medium",    "slow",      "slower",   "veryslow"};
+
+void check_settings(const std::string& path, const Format& format, const VideoSettings& s) {
+  auto fail = [&](const std::string& what) { throw OutputError(path + ": " + what); };
+  if (s.width <= 0 || s.height <= 0)
+    fail("video size " + std::to_string(s.width) + "x" + std::to_string(s.height) +
+         " must be positive");
+  if (s.fps <= 0 || s.fps > 1000)
+    fail("frame rate " + std::to_string(s.fps) + " must be between 1 and 1000 frames/s");
+  if (format.kind == Kind::gif && s.fps > 50)
+    fail(
+        "GIF stores frame delays in 1/100 s and browsers slow delays under 2/100 s down to "
+        "1/10 s, so " +
+        std::to_string(s.fps) +
+        " frames/s would play too slowly; use 50 frames/s or less "
+        "for .gif, or write .mp4");
+  if (!s.codec_hint.empty() && s.codec_hint != format.codec && s.codec_hint != format.encoder)
+    fail("codec '" + s.codec_hint + "' does not go with " + format.extension +
+         " files, which use " + format.codec +
+         "; leave the codec empty or change the extension (.mp4: h264, .webm: "
+         "vp9, .gif: gif)");
+  if (s.crf < 0 || s.crf > 51) fail("x264 crf " + std::to_string(s.crf) + " must be 0..51");
+  if (s.vp9_crf < 0 || s.vp9_crf > 63)
+    fail("VP9 crf " + std::to_string(s.vp9_crf) + " must be 0..63");
+  if (format.kind == Kind::mp4 && std::find(std::begin(kX264Presets), std::end(kX264Presets),
+                                            s.preset) == std::end(kX264Presets))
+    fail("unknown x264 preset '" + s.preset +
+         "'; use one of ultrafast, superfast, veryfast, faster, fast, medium, slow, slower, "
+         "veryslow");
+  if (s.threads < 0 || s.threads > 64)
+    fail("encoder threads " + std::to_string(s.threads) + " must be 0 (default) .. 64");
+}
+
+// ---- libav helpers --------------------------------------------------------------------------
+
+std::string av_text(int err) {
+  char text[AV_ERROR_MAX_STRING_SIZE] = {};
+  av_strerror(err, text, sizeof text);
+  return text;
+}
+
+// libav's own messages (x264's banner and statistics) are noise for a command-line user;
+// errors still show. Only lowered from libav's default, so a program that chose a level
+// keeps it.
+void quiet_libav_once() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    if (av_log_get_level() == AV_LOG_INFO) av_log_set_level(AV_LOG_ERROR);
+  });
+}
+
+std::string temp_name_for(const fs::path& target) {
+  static std::atomic<int> counter{0};
+  // Hidden, in the target's directory (the rename cannot cross filesystems), unique per
+  // process and encoder, and ending in the real extension so tools recognise the format.
+  // (Appended piecewise: "." + string trips GCC 12's -Wrestrict false positive.)
+  std::string name(".");
+  name.append(target.filename().string()).append(".part-").append(std::to_string(::getpid()));
+  name.append("-").append(std::to_string(counter++)).append(target.extension().string());
+  return (target.parent_path() / name).string();
+}
+
+}  // namespace
+
+// ---- Impl -------------------------------------------------------------------------------------
+
+struct VideoEncoder::Impl {
+  std::string path, temp;
+  const Format* format = nullptr;
+  VideoSettings settings;
+  int coded_width = 0, coded_height = 0;  // the padded size for H.264
+
+  AVFormatContext* mux = nullptr;
+  AVStream* stream = nullptr;
+  AVCodecContext* codec = nullptr;
+  AVFrame* frame = nullptr;
+  AVPacket* packet = nullptr;
+  SwsContext* sws = nullptr;
+  std::vector<std::uint8_t> padded;  // odd-sized RGBA frames, padded to the coded size
+  std::unique_ptr<gif::Quantizer> quantizer;
+  std::int64_t next_pts = 0;
+
+  std::deque<Image> queue;
+  std::size_t capacity = 3;
+  std::mutex mutex;
+  std::condition_variable ready, space;
+  bool closing = false, discard = false, done = false;
+  std::exception_ptr error;
+  std::thread worker;
+  long long pushed = 0;
+
+  void open();
+  void open_codec();
+  void work();
+  void encode(const Image& image);
+  void convert_yuv(const Image& image);
+  void convert_gif(const Image& image);
+  void send(const AVFrame* input);
+  void stop_worker(bool drop_queued);
+  std::int64_t end_time(std::int64_t pts) const;  // end of frame `pts`, in the stream's units
+  void complete();  // flush, trailer, close: the temporary file is then a whole video
+  std::string commit(const std::string& target);
+  void release();
+  void remove_temp();
+
+  [[noreturn]] void write_failed(int err) const {
+    throw OutputError(path + ": writing the video failed (" + av_text(err) +
+                      "); nothing was written under that name. Free some disk space or choose "
+                      "another directory");
+  }
+};
+
+void VideoEncoder::Impl::open() {
+  const fs::path target(path);
+  if (fs::is_directory(target))
+    throw OutputError(path + ": is a directory; give a file name, e.g. " +
+                      (target / (std::string("out") + format->extension)).string());
+  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  if (!fs::is_directory(dir))
+    throw OutputError(path + ": the directory " + dir.string() +
+                      " does not exist; create it (mkdir -p " + dir.string() +
+                      ") or choose another path");
+  temp = temp_name_for(dir / target.filename());
+
+  int err = avformat_alloc_output_context2(&mux, nullptr, format->muxer, temp.c_str());
+  if (err < 0 || !mux)
+    throw OutputError(path + ": this FFmpeg build has no " + format->muxer + " muxer (" +
+                      av_text(err) + "); install the full libavformat or choose another format");
+  open_codec();
+
+  err = avio_open(&mux->pb, temp.c_str(), AVIO_FLAG_WRITE);
+  if (err < 0)
+    throw OutputError(path + ": cannot write in " + dir.string() + " (" + av_text(err) +
+                      "); choose a writable directory");
+  AVDictionary* options = nullptr;
+  // Bit-exact muxing: no "encoder" tag with the library version, no creation time.
+  av_dict_set(&options, "fflags", "+bitexact", 0);
+  if (format->kind == Kind::mp4) av_dict_set(&options, "movflags", "+faststart", 0);
+  if (format->kind == Kind::gif) av_dict_set(&options, "loop", "0", 0);  // 0: forever
+  err = avformat_write_header(mux, &options);
+  av_dict_free(&options);
+  if (err < 0) write_failed(err);
+}
+
+void VideoEncoder::Impl::open_codec() {
+  const AVCodec* encoder = avcodec_find_encoder_by_name(format->encoder);
+  if (!encoder)
+    throw OutputError(
+        path + ": this FFmpeg build has no " + format->encoder + " encoder, needed for " +
+        format->extension + " files; install libavcodec with " + format->encoder +
+        " (Debian's libavcodec59 has it) or write another format (.mp4, .webm, .gif)");
+  const VideoSettings& s = settings;
+  const bool yuv = format->kind != Kind::gif;
+  // H.264 4:2:0 needs even sizes: pad by one pixel (see convert_yuv). VP9 codes odd sizes.
+  coded_width = format->kind == Kind::mp4 ? (s.width + 1) & ~1 : s.width;
+  coded_height = format->kind == Kind::mp4 ? (s.height + 1) & ~1 : s.height;
+
+  codec = avcodec_alloc_context3(encoder);
+  packet = av_packet_alloc();
+  frame = av_frame_alloc();
+  if (!codec || !packet || !frame) throw std::bad_alloc();
+  codec->width = coded_width;
+  codec->height = coded_height;
+  codec->sample_aspect_ratio = AVRational{1, 1};
+  codec->time_base = AVRational{1, s.fps};  // pts = frame index: exact timing
+  codec->framerate = AVRational{s.fps, 1};
+  codec->pix_fmt = yuv ? AV_PIX_FMT_YUV420P : AV_PIX_FMT_PAL8;
+  codec->flags |= AV_CODEC_FLAG_BITEXACT;
+  if (mux->oformat->flags & AVFMT_GLOBALHEADER) codec->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+  // A fixed thread count: x264's output depends on it (header: threads).
+  codec->thread_count = s.threads > 0 ? s.threads : 2;
+  if (yuv) {
+    // A key frame every 2 s: lecture players seek to key frames.
+    codec->gop_size = 2 * s.fps;
+    codec->color_range = AVCOL_RANGE_MPEG;
+    codec->color_primaries = AVCOL_PRI_BT709;
+    codec->color_trc = AVCOL_TRC_BT709;
+    codec->colorspace = AVCOL_SPC_BT709;
+  }
+
+  AVDictionary* options = nullptr;
+  if (format->kind == Kind::mp4) {
+    av_dict_set(&options, "preset", s.preset.c_str(), 0);
+    av_dict_set_int(&options, "crf", s.crf, 0);
+  } else if (format->kind == Kind::webm) {
+    // Constant quality (crf with bit rate 0) at libvpx's real-time speed: the fastest VP9
+    // there is (~43 fps at 1080p here), with rows encoded in parallel.
+    codec->bit_rate = 0;
+    av_dict_set_int(&options, "crf", s.vp9_crf, 0);
+    av_dict_set(&options, "deadline", "realtime", 0);
+    av_dict_set_int(&options, "cpu-used", 8, 0);
+    av_dict_set_int(&options, "row-mt", 1, 0);
+  }
+  const int err = avcodec_open2(codec, encoder, &options);
+  av_dict_free(&options);
+  if (err < 0)
+    throw OutputError(path + ": cannot open the " + format->encoder + " encoder for " +
+                      std::to_string(coded_width) + "x" + std::to_string(coded_height) + " at " +
+                      std::to_string(s.fps) + " frames/s (" + av_text(err) +
+                      "); try a smaller size or another format");
+
+  frame->format = codec->pix_fmt;
+  frame->width = coded_width;
+  frame->height = coded_height;
+  if (av_frame_get_buffer(frame, 0) < 0) throw std::bad_alloc();
+
+  stream = avformat_new_stream(mux, nullptr);
+  if (!stream) throw std::bad_alloc();
+  stream->time_base = codec->time_base;
+  stream->avg_frame_rate = stream->r_frame_rate = codec->framerate;
+  if (avcodec_parameters_from_context(stream->codecpar, codec) < 0) throw std::bad_alloc();
+
+  if (yuv) {
+    // No scaling, only RGB -> Y'CbCr: accurate rounding and bit-exact arithmetic keep the
+    // output identical everywhere; bilinear filtering is what the 2x chroma reduction uses.
+    sws = sws_getContext(coded_width, coded_height, AV_PIX_FMT_RGBA, coded_width, coded_height,
+                         AV_PIX_FMT_YUV420P, SWS_BILINEAR | SWS_ACCURATE_RND | SWS_BITEXACT,
+                         nullptr, nullptr, nullptr);
+    if (!sws) throw std::bad_alloc();
+    const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
+    // Source: full-range RGB; destination: BT.709 limited range, as tagged above.
+    sws_setColorspaceDetails(sws, bt709, 1, bt709, 0, 0, 1 << 16, 1 << 16);
+  }
+}
+
+void VideoEncoder::Impl::work() {
+  for (;;) {
+    Image image;
+    {
+      std::unique_lock lock(mutex);
+      ready.wait(lock, [this] { return !queue.empty() || closing; });
+      if (queue.empty()) return;
+      image = std::move(queue.front());
+      queue.pop_front();
+    }
+    space.notify_one();
+    {
+      std::lock_guard lock(mutex);
+      if (error || discard) continue;  // after a failure: drain without work
+    }
+    try {
+      encode(image);
+    } catch (...) {
+      std::lock_guard lock(mutex);
+      error = std::current_exception();
+      space.notify_all();
+    }
+  }
+}
+
+void VideoEncoder::Impl::encode(const Image& image) {
+  // The encoder may still hold the previous frame (the GIF encoder keeps it to find what
+  // changed): make_writable then gives this frame fresh buffers instead of overwriting.
+  const int err = av_frame_make_writable(frame);
+  if (err < 0) throw std::bad_alloc();
+  if (format->kind == Kind::gif)
+    convert_gif(image);
+  else
+    convert_yuv(image);
+  frame->pts = next_pts++;
+  send(frame);
+}
+
+void VideoEncoder::Impl::convert_yuv(const Image& image) {
+  const std::uint8_t* src[1] = {image.rgba.data()};
+  int src_stride[1] = {image.width * 4};
+  if (coded_width != image.width || coded_height != image.height) {
+    // Odd size (H.264 only): pad the RGBA picture by repeating its last column and row, then
+    // convert at the even size. (Converting at the odd size and padding afterwards is not
+    // enough: swscale's last chroma sample of an odd-width row mixes in a pixel that does
+    // not exist.) Costs one copy of the frame, only for odd sizes.
+    const std::size_t row_bytes = static_cast<std::size_t>(coded_width) * 4;
+    padded.resize(row_bytes * coded_height);
+    for (int y = 0; y < coded_height; ++y) {
+      const std::uint8_t* from = image.pixel(0, std::min(y, image.height - 1));
+      std::uint8_t* to = padded.data() + row_bytes * y;
+      std::memcpy(to, from, static_cast<std::size_t>(image.width) * 4);
+      if (coded_width != image.width)
+        std::memcpy(to + image.width * 4, to + (image.width - 1) * 4, 4);
+    }
+    src[0] = padded.data();
+    src_stride[0] = static_cast<int>(row_bytes);
+  }
+  sws_scale(sws, src, src_stride, 0, coded_height, frame->data, frame->linesize);
+}
+
+void VideoEncoder::Impl::convert_gif(const Image& image) {
+  if (!quantizer) quantizer = std::make_unique<gif::Quantizer>(gif::make_palette(image));
+  double poor = quantizer->map(image, frame->data[0], frame->linesize[0]);
+  // More than 1 % of the picture far from every palette colour: new colours have come, so
+  // make a new palette from this frame (costlier frames from here on; gif_palette.h).
+  if (poor > 0.01) {
+    quantizer = std::make_unique<gif::Quantizer>(gif::make_palette(image));
+    poor = quantizer->map(image, frame->data[0], frame->linesize[0]);
+  }
+  std::memcpy(frame->data[1], quantizer->palette().data(), AVPALETTE_SIZE);
+}
+
+// Sends one frame (nullptr: end of stream) and writes every packet the encoder has ready.
+void VideoEncoder::Impl::send(const AVFrame* input) {
+  int err = avcodec_send_frame(codec, input);
+  if (err < 0)
+    throw OutputError(path + ": the " + std::string(format->encoder) + " encoder failed (" +
+                      av_text(err) + ")");
+  for (;;) {
+    err = avcodec_receive_packet(codec, packet);
+    if (err == AVERROR(EAGAIN) || err == AVERROR_EOF) return;
+    if (err < 0)
+      throw OutputError(path + ": the " + std::string(format->encoder) + " encoder failed (" +
+                        av_text(err) + ")");
+    packet->stream_index = stream->index;
+    // Muxers pick their own time base (MP4 1/15360, WebM 1/1000, GIF 1/100). Each packet is
+    // one frame; its duration is the difference of rounded times, so the durations add up
+    // to the rounded total and never drift.
+    const std::int64_t pts = packet->pts;
+    av_packet_rescale_ts(packet, codec->time_base, stream->time_base);
+    packet->duration = end_time(pts) - av_rescale_q(pts, codec->time_base, stream->time_base);
+    err = av_interleaved_write_frame(mux, packet);  // takes the packet's data
+    if (err < 0) write_failed(err);
+  }
+}
+
+void VideoEncoder::Impl::stop_worker(bool drop_queued) {
+  {
+    std::lock_guard lock(mutex);
+    closing = true;
+    if (drop_queued) {
+      discard = true;
+      queue.clear();
+    }
+  }
+  ready.notify_all();
+  space.notify_all();
+  if (worker.joinable()) worker.join();
+}
+
+std::int64_t VideoEncoder::Impl::end_time(std::int64_t pts) const {
+  return av_rescale_q(pts + 1, codec->time_base, stream->time_base);
+}
+
+void VideoEncoder::Impl::complete() {
+  send(nullptr);  // flush: x264 holds frames for look-ahead and B-frames
+  if (format->kind == Kind::gif && next_pts > 0) {
+    // The GIF muxer gives the last frame the previous frame's delay unless told otherwise
+    // (3 or 4 cs at 30 fps): tell it the delay that makes the total exact.
+    const std::int64_t last = end_time(next_pts - 1) - end_time(next_pts - 2);
+    av_opt_set_int(mux->priv_data, "final_delay", last, 0);
+  }
+  int err = av_write_trailer(mux);
+  if (err < 0) write_failed(err);
+  if (mux->pb->error < 0) write_failed(mux->pb->error);
+  err = avio_closep(&mux->pb);
+  if (err < 0) write_failed(err);
+  // Durable before it gets its name, like OutputFile::commit.
+  const int fd = ::open(temp.c_str(), O_RDONLY);
+  if (fd < 0 || ::fsync(fd) != 0) {
+    const int e = errno;
+    if (fd >= 0) ::close(fd);
+    write_failed(AVERROR(e));
+  }
+  ::close(fd);
+}
+
+std::string VideoEncoder::Impl::commit(const std::string& target) {
+  if (done) throw std::logic_error("VideoEncoder: finish() or abort_partial() called twice");
+  done = true;
+  try {
+    stop_worker(false);
+    if (error) std::rethrow_exception(error);
+    complete();
+    if (std::rename(temp.c_str(), target.c_str()) != 0)
+      throw OutputError(target + ": cannot rename the finished video into place (" +
+                        std::strerror(errno) + ")");
+    temp.clear();
+  } catch (...) {
+    release();
+    remove_temp();
+    throw;
+  }
+  release();
+  return target;
+}
+
+void VideoEncoder::Impl::release() {
+  sws_freeContext(sws);
+  sws = nullptr;
+  av_frame_free(&frame);
+  av_packet_free(&packet);
+  avcodec_free_context(&codec);
+  if (mux) {
+    if (mux->pb) avio_closep(&mux->pb);
+    avformat_free_context(mux);
+    mux = nullptr;
+  }
+  quantizer.reset();
+}
+
+void VideoEncoder::Impl::remove_temp() {
+  if (!temp.empty()) std::remove(temp.c_str());
+  temp.clear();
+}
+
+// ---- VideoEncoder -----------------------------------------------------------------------------
+
+VideoEncoder::VideoEncoder(std::string path, VideoSettings settings) : impl_(new Impl) {
+  quiet_libav_once();
+  Impl& d = *impl_;
+  d.path = std::move(path);
+  d.format = &format_for(d.path);
+  check_settings(d.path, *d.format, settings);
+  d.settings = std::move(settings);
+  d.capacity = static_cast<std::size_t>(std::max(1, d.settings.queue));
+  try {
+    d.open();
+  } catch (...) {
+    d.release();
+    d.remove_temp();
+    throw;
+  }
+  d.worker = std::thread([&d] { d.work(); });
+}
+
+VideoEncoder::~VideoEncoder() {
+  if (impl_->done) return;
+  impl_->stop_worker(true);
+  impl_->release();
+  impl_->remove_temp();
+}
+
+void VideoEncoder::push(Image image) {
+  Impl& d = *impl_;
+  if (image.width != d.settings.width || image.height != d.settings.height ||
+      image.rgba.size() != static_cast<std::size_t>(image.width) * image.height * 4)
+    throw std::invalid_argument("VideoEncoder::push: a " + std::to_string(image.width) + "x" +
+                                std::to_string(image.height) + " image for a " +
+                                std::to_string(d.settings.width) + "x" +
+                                std::to_string(d.settings.height) + " video");
+  std::unique_lock lock(d.mutex);
+  if (d.closing) throw std::logic_error("VideoEncoder::push after finish()");
+  d.space.wait(lock, [&d] { return d.queue.size() < d.capacity || d.error; });
+  if (d.error) std::rethrow_exception(d.error);
+  d.queue.push_back(std::move(image));
+  ++d.pushed;
+  lock.unlock();
+  d.ready.notify_one();
+}
+
+void VideoEncoder::finish() {
+  if (impl_->done) return;
+  impl_->commit(impl_->path);
+}
+
+std::string VideoEncoder::abort_partial(const std::string& partial_path) {
+  return impl_->commit(partial_path.empty() ? partial_video_path(impl_->path) : partial_path);
+}
+
+const std::string& VideoEncoder::path() const {
+  return impl_->path;
+}
+
+long long VideoEncoder::frames_pushed() const {
+  std::lock_guard lock(impl_->mutex);
+  return impl_->pushed;
+}
+
+// ---- free functions -----------------------------------------------------------------------
+
+std::unique_ptr<FrameSink> open_video(const std::string& path, const VideoSettings& settings) {
+  return std::make_unique<VideoEncoder>(path, settings);
+}
+
+std::string video_codec_name(const std::string& path) {
+  return format_for(path).codec;
+}
+
+std::string partial_video_path(const std::string& path) {
+  const fs::path p(path);
+  return (p.parent_path() / (p.stem().string() + ".partial" + p.extension().string())).string();
+}
+
+}  // namespace cb

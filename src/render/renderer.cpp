@@ -1,0 +1,287 @@
+#include "render/renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+#include "gl/gl_loader.h"
+#include "render/shader_interface.h"
+#include "render/shader_program.h"
+#include "render/text.h"
+
+namespace cb {
+
+namespace {
+
+// Per-instance data, laid out as the shaders read it.
+struct QuadInstance {
+  float ends[4];
+  float color[4];
+  float style[2];  // width, antialiasing margin
+};
+struct DiscInstance {
+  float center[3];  // x, y, radius
+  float color[4];
+};
+struct TriangleVertex {
+  float position[2];
+  float color[4];
+};
+
+void copy_color(const Color& c, float* out) {
+  out[0] = c.r;
+  out[1] = c.g;
+  out[2] = c.b;
+  out[3] = c.a;
+}
+
+QuadInstance rect_instance(const Rect& r) {
+  // A rectangle is a thick horizontal segment through its middle, without antialiasing, so
+  // it covers exactly the pixels whose centres lie inside it.
+  QuadInstance q{{r.x, r.y + 0.5f * r.h, r.x + r.w, r.y + 0.5f * r.h}, {}, {r.h, 0.0f}};
+  copy_color(r.color, q.color);
+  return q;
+}
+
+QuadInstance segment_instance(float x0, float y0, float x1, float y1, float width, const Color& c) {
+  QuadInstance q{{x0, y0, x1, y1}, {}, {width, 1.0f}};
+  copy_color(c, q.color);
+  return q;
+}
+
+// A coil as a zigzag of 2 * coils + 2 straight pieces: a short straight lead at each end,
+// the teeth in between alternating across the axis by `width`.
+void append_spring(const SpringInstance& s, std::vector<QuadInstance>& out) {
+  const float line = std::max(1.5f, 0.22f * s.width);
+  if (s.coils <= 0.0f) {
+    out.push_back(
+        segment_instance(s.x0, s.y0, s.x1, s.y1, std::max(line, 0.6f * s.width), s.color));
+    return;
+  }
+  const float dx = s.x1 - s.x0, dy = s.y1 - s.y0;
+  const float len = std::sqrt(dx * dx + dy * dy);
+  if (len <= 0.0f) return;
+  const float ux = dx / len, uy = dy / len, nx = -uy, ny = ux;
+  const int teeth = 2 * static_cast<int>(std::ceil(s.coils));
+  const float lead = 0.12f * len;
+  float px = s.x0 + ux * lead, py = s.y0 + uy * lead;
+  out.push_back(segment_instance(s.x0, s.y0, px, py, line, s.color));
+  const float step = (len - 2.0f * lead) / teeth;
+  for (int k = 0; k <= teeth; ++k) {
+    const float along = lead + step * (k == teeth ? teeth : k + 0.5f);
+    const float side = k == teeth ? 0.0f : (k % 2 == 0 ? 0.5f : -0.5f) * s.width;
+    const float qx = s.x0 + ux * along + nx * side, qy = s.y0 + uy * along + ny * side;
+    out.push_back(segment_instance(px, py, qx, qy, line, s.color));
+    px = qx;
+    py = qy;
+  }
+  out.push_back(segment_instance(px, py, s.x1, s.y1, line, s.color));
+}
+
+// A vertex array with a static unit-quad corner buffer and a streamed instance buffer.
+struct InstancedBatch {
+  GLuint vao = 0, corners = 0, instances = 0;
+  void create(const float* corner_data, int corner_count) {
+    glGenVertexArrays(1, &vao);
+    glBindVertexArray(vao);
+    glGenBuffers(1, &corners);
+    glBindBuffer(GL_ARRAY_BUFFER, corners);
+    glBufferData(GL_ARRAY_BUFFER, corner_count * 2 * sizeof(float), corner_data, GL_STATIC_DRAW);
+    glEnableVertexAttribArray(shader::kCorner);
+    glVertexAttribPointer(shader::kCorner, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glGenBuffers(1, &instances);
+    glBindBuffer(GL_ARRAY_BUFFER, instances);
+  }
+  // Declares one per-instance float attribute of `size` floats at `offset` bytes.
+  void attribute(int location, int size, int stride, std::size_t offset) {
+    glEnableVertexAttribArray(location);
+    glVertexAttribPointer(location, size, GL_FLOAT, GL_FALSE, stride,
+                          reinterpret_cast<void*>(offset));
+    glVertexAttribDivisor(location, 1);
+  }
+  void destroy() {
+    glDeleteBuffers(1, &corners);
+    glDeleteBuffers(1, &instances);
+    glDeleteVertexArrays(1, &vao);
+  }
+};
+
+}  // namespace
+
+struct Renderer::Impl {
+  int width, height;
+  GLuint fbo = 0, color = 0;
+  GLuint quad_program = 0, disc_program = 0, triangle_program = 0;
+  InstancedBatch quads, discs;
+  GLuint triangle_vao = 0, triangle_buffer = 0;
+  // Scratch reused frame to frame: no allocation once warmed up.
+  std::vector<QuadInstance> quad_data;
+  std::vector<DiscInstance> disc_data;
+  std::vector<TriangleVertex> triangle_data;
+  std::vector<Rect> text_rects;
+
+  Impl(int w, int h) : width(w), height(h) {
+    if (w <= 0 || h <= 0 || w > 16384 || h > 16384)
+      throw std::runtime_error("frame size " + std::to_string(w) + "x" + std::to_string(h) +
+                               " is out of range (1..16384)");
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glGenRenderbuffers(1, &color);
+    glBindRenderbuffer(GL_RENDERBUFFER, color);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, w, h);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+      throw std::runtime_error("the off-screen framebuffer (" + std::to_string(w) + "x" +
+                               std::to_string(h) + ") is incomplete");
+    quad_program = build_program("quad");
+    disc_program = build_program("disc");
+    triangle_program = build_program("triangle");
+
+    const float quad_corners[] = {0, -1, 1, -1, 0, 1, 1, 1};  // triangle strip
+    quads.create(quad_corners, 4);
+    const int qs = sizeof(QuadInstance);
+    quads.attribute(shader::kEnds, 4, qs, offsetof(QuadInstance, ends));
+    quads.attribute(shader::kColor, 4, qs, offsetof(QuadInstance, color));
+    quads.attribute(shader::kStyle, 2, qs, offsetof(QuadInstance, style));
+
+    const float disc_corners[] = {-1, -1, 1, -1, -1, 1, 1, 1};
+    discs.create(disc_corners, 4);
+    const int ds = sizeof(DiscInstance);
+    discs.attribute(shader::kCenter, 3, ds, offsetof(DiscInstance, center));
+    discs.attribute(shader::kColor, 4, ds, offsetof(DiscInstance, color));
+
+    glGenVertexArrays(1, &triangle_vao);
+    glBindVertexArray(triangle_vao);
+    glGenBuffers(1, &triangle_buffer);
+    glBindBuffer(GL_ARRAY_BUFFER, triangle_buffer);
+    const int ts = sizeof(TriangleVertex);
+    glEnableVertexAttribArray(shader::kPosition);
+    glVertexAttribPointer(shader::kPosition, 2, GL_FLOAT, GL_FALSE, ts,
+                          reinterpret_cast<void*>(offsetof(TriangleVertex, position)));
+    glEnableVertexAttribArray(shader::kColor);
+    glVertexAttribPointer(shader::kColor, 4, GL_FLOAT, GL_FALSE, ts,
+                          reinterpret_cast<void*>(offsetof(TriangleVertex, color)));
+    glBindVertexArray(0);
+  }
+
+  ~Impl() {
+    quads.destroy();
+    discs.destroy();
+    glDeleteBuffers(1, &triangle_buffer);
+    glDeleteVertexArrays(1, &triangle_vao);
+    glDeleteProgram(quad_program);
+    glDeleteProgram(disc_program);
+    glDeleteProgram(triangle_program);
+    glDeleteRenderbuffers(1, &color);
+    glDeleteFramebuffers(1, &fbo);
+  }
+
+  void use(GLuint program) {
+    glUseProgram(program);
+    glUniform2f(glGetUniformLocation(program, "u_viewport"), static_cast<float>(width),
+                static_cast<float>(height));
+  }
+
+  template <class T>
+  static void upload(GLuint buffer, const std::vector<T>& data) {
+    glBindBuffer(GL_ARRAY_BUFFER, buffer);
+    // Orphan then fill: the driver need not wait for the previous frame's draw.
+    glBufferData(GL_ARRAY_BUFFER, data.size() * sizeof(T), nullptr, GL_STREAM_DRAW);
+    glBufferSubData(GL_ARRAY_BUFFER, 0, data.size() * sizeof(T), data.data());
+  }
+
+  void draw_quads() {
+    if (quad_data.empty()) return;
+    use(quad_program);
+    glBindVertexArray(quads.vao);
+    upload(quads.instances, quad_data);
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(quad_data.size()));
+    quad_data.clear();
+  }
+
+  void draw_layer(const Layer& layer) {
+    for (const Rect& r : layer.rects) quad_data.push_back(rect_instance(r));
+    for (const Segment& s : layer.segments)
+      quad_data.push_back(segment_instance(s.x0, s.y0, s.x1, s.y1, s.width, s.color));
+    for (const SpringInstance& s : layer.springs) append_spring(s, quad_data);
+    draw_quads();
+
+    if (!layer.triangles.empty()) {
+      triangle_data.clear();
+      for (const Triangle& t : layer.triangles)
+        for (int k = 0; k < 3; ++k) {
+          TriangleVertex v{{t.x[k], t.y[k]}, {}};
+          copy_color(t.color, v.color);
+          triangle_data.push_back(v);
+        }
+      use(triangle_program);
+      glBindVertexArray(triangle_vao);
+      upload(triangle_buffer, triangle_data);
+      glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(triangle_data.size()));
+    }
+
+    if (!layer.beads.empty()) {
+      disc_data.clear();
+      for (const BeadInstance& b : layer.beads) {
+        DiscInstance d{{b.x, b.y, b.radius}, {}};
+        copy_color(b.color, d.color);
+        disc_data.push_back(d);
+      }
+      use(disc_program);
+      glBindVertexArray(discs.vao);
+      upload(discs.instances, disc_data);
+      glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(disc_data.size()));
+    }
+
+    text_rects.clear();
+    for (const Label& l : layer.labels) label_rects(l, text_rects);
+    for (const Rect& r : text_rects) quad_data.push_back(rect_instance(r));
+    draw_quads();
+  }
+};
+
+Renderer::Renderer(int width, int height) : impl_(std::make_unique<Impl>(width, height)) {}
+Renderer::~Renderer() = default;
+int Renderer::width() const {
+  return impl_->width;
+}
+int Renderer::height() const {
+  return impl_->height;
+}
+
+void Renderer::draw(const RenderSnapshot& s) {
+  Impl& im = *impl_;
+  glBindFramebuffer(GL_FRAMEBUFFER, im.fbo);
+  glViewport(0, 0, im.width, im.height);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_SCISSOR_TEST);
+  glEnable(GL_BLEND);
+  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  glClearColor(s.background.r, s.background.g, s.background.b, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  for (const Layer& layer : s.layers) im.draw_layer(layer);
+}
+
+void Renderer::read(Image& out) {
+  Impl& im = *impl_;
+  out.width = im.width;
+  out.height = im.height;
+  out.rgba.resize(static_cast<std::size_t>(im.width) * im.height * 4);
+  glBindFramebuffer(GL_FRAMEBUFFER, im.fbo);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, im.width, im.height, GL_RGBA, GL_UNSIGNED_BYTE, out.rgba.data());
+  // GL's rows run bottom-up; images here run top-down.
+  const std::size_t row = static_cast<std::size_t>(im.width) * 4;
+  std::vector<std::uint8_t> tmp(row);
+  for (int y = 0; y < im.height / 2; ++y) {
+    std::uint8_t* a = &out.rgba[y * row];
+    std::uint8_t* b = &out.rgba[(im.height - 1 - y) * row];
+    std::memcpy(tmp.data(), a, row);
+    std::memcpy(a, b, row);
+    std::memcpy(b, tmp.data(), row);
+  }
+}
+
+}  // namespace cb

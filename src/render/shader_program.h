@@ -1,0 +1,12 @@
+// Compiling and linking the embedded shaders; errors carry the driver's log.
+#pragma once
+
+#include <string>
+
+namespace cb {
+
+// Links "<name>.vert" + "<name>.frag" from shaders/ (embedded). Needs a current context.
+// Throws std::runtime_error with the file name and the compiler's log.
+unsigned int build_program(const std::string& name);
+
+}  // namespace cb

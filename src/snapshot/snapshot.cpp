@@ -1,0 +1,266 @@
+// build_snapshot: the layout of a frame and its fixed furniture (wall, legend, time label);
+// the chain itself is drawn by chain_panel.cpp.
+//
+// Design note: every position comes from snapshot_layout(style, params), which depends on
+// nothing that changes during a run, so a video's frames share one layout and nothing jumps.
+// Sizes scale with the frame: the text is a whole multiple of the font's 7 px cap height
+// (crisp glyphs), margins and the wall follow the frame's size, and the chain takes the rest.
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <cstdio>
+#include <iterator>
+#include <limits>
+
+#include "snapshot/snapshot_internal.h"
+
+namespace cb {
+
+using namespace snapshot_detail;
+
+bool parse_view(const std::string& text, View& out) {
+  if (text == "longitudinal") {
+    out = View::Longitudinal;
+  } else if (text == "transverse") {
+    out = View::Transverse;
+  } else if (text == "both") {
+    out = View::Both;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+const char* view_name(View view) {
+  switch (view) {
+    case View::Longitudinal:
+      return "longitudinal";
+    case View::Transverse:
+      return "transverse";
+    case View::Both:
+      return "both";
+  }
+  return "?";
+}
+
+namespace {
+
+constexpr double kMaxBeadRadius = 18.0;
+constexpr double kRibbonSpacing = 3.0;  // below this many pixels per bead: the strain ribbon
+
+// `two_panels`: the first text row holds the panel's caption, so the chain keeps off it.
+PanelLayout panel_layout(View view, double top, double bottom, bool two_panels,
+                         const SnapshotLayout& l, const SnapshotStyle& style, int beads) {
+  PanelLayout p;
+  p.view = view;
+  p.top = static_cast<float>(top);
+  p.bottom = static_cast<float>(bottom);
+  const double ts = l.text_size;
+  if (two_panels) top = std::min(bottom - 1.0, top + 1.6 * ts);
+  const double h = bottom - top;
+  const double usable = l.x_right - l.x_wall;
+  // Longitudinal: bead N lands on x_right when psi_N = psi_range, the largest extension.
+  const double spacing =
+      view == View::Longitudinal ? usable / (beads + style.psi_range) : usable / beads;
+  // A chain that stretches a lot would get tiny beads at rest; size them for the geometric
+  // mean of the rest and the fully stretched spacing (still below half the rest spacing).
+  const double typical = std::min(std::sqrt(spacing * usable / beads), 1.6 * spacing);
+  const double r = std::clamp(0.3 * typical, 1.5, kMaxBeadRadius);
+  // A coil needs room between the beads to read as one; short springs are bars.
+  const double free_length = spacing - 2.0 * r;
+  p.spacing = static_cast<float>(spacing);
+  p.bead_radius = static_cast<float>(r);
+  p.spring_width = static_cast<float>(1.4 * r);
+  p.coils = free_length >= 20.0
+                ? static_cast<float>(std::clamp(std::round(free_length / 6.0), 4.0, 8.0))
+                : 0.0f;
+  if (view == View::Longitudinal) {
+    // The chain sits a little above the middle: break markers stack below it.
+    const double centre = top + 0.42 * h;
+    p.centre_y = static_cast<float>(centre);
+    p.psi_scale = p.spacing;
+    p.ribbon_width = static_cast<float>(std::clamp(0.1 * h, 4.0, 30.0));
+    p.wall_half_height = static_cast<float>(std::min(0.35 * h, std::max(4.0 * r, 0.15 * h)));
+    p.half_height = static_cast<float>(0.5 * h);
+    const double clear = std::max(r, 0.5 * p.ribbon_width) + 2.0;
+    p.markers_top = static_cast<float>(centre + clear + 0.6 * ts + 0.4 * ts);
+  } else {
+    // A band at the bottom holds the break markers' labels (with two panels the
+    // longitudinal one shows them); psi is drawn across the rest.
+    const double band = two_panels ? 0.5 * ts : std::min(8.0 * ts, 0.3 * h);
+    const double plot_bottom = bottom - band;
+    const double centre = 0.5 * (top + plot_bottom);
+    const double half = std::max(1.0, 0.5 * (plot_bottom - top) - r - 2.0);
+    p.centre_y = static_cast<float>(centre);
+    p.half_height = static_cast<float>(half);
+    p.psi_scale = static_cast<float>(half / style.psi_range);
+    p.ribbon_width = static_cast<float>(std::clamp(0.02 * h, 2.0, 8.0));
+    p.wall_half_height = static_cast<float>(half + r);
+    p.markers_top = static_cast<float>(plot_bottom + 0.4 * ts);
+  }
+  return p;
+}
+
+void add_wall(Layer& layer, const SnapshotLayout& l, const PanelLayout& p) {
+  const double x0 = l.margin, x1 = l.x_wall;
+  const double y0 = p.centre_y - p.wall_half_height, y1 = p.centre_y + p.wall_half_height;
+  layer.rects.push_back(Rect{static_cast<float>(x0), static_cast<float>(y0),
+                             static_cast<float>(x1 - x0), static_cast<float>(y1 - y0), kWall});
+  // Hatching at 45 degrees: the lines x + y = k, clipped to the wall's rectangle.
+  const double step = std::max(5.0, std::round(0.5 * l.text_size));
+  const float width = static_cast<float>(std::max(1.0, l.text_size / 10.0));
+  for (double k = x0 + y0 + step; k < x1 + y1; k += step) {
+    const double lo = std::max(x0, k - y1), hi = std::min(x1, k - y0);
+    if (hi - lo < 0.5) continue;
+    layer.segments.push_back(Segment{static_cast<float>(lo), static_cast<float>(k - lo),
+                                     static_cast<float>(hi), static_cast<float>(k - hi), width,
+                                     kHatch});
+  }
+  layer.segments.push_back(
+      Segment{l.x_wall, static_cast<float>(y0), l.x_wall, static_cast<float>(y1), 2.0f, kWallFace});
+}
+
+std::string format(const char* fmt, double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, fmt, value);
+  return buffer;
+}
+
+// The colour bar: strain_color over s in [-1, 1], ticks at -1, 0, +1 with their values, and
+// which side is compression and which tension.
+void add_legend(Layer& layer, const SnapshotLayout& l, const SnapshotStyle& style) {
+  const float ts = l.text_size;
+  const int cells = std::max(1, std::min(256, static_cast<int>(l.legend_w)));
+  const float cell_w = l.legend_w / static_cast<float>(cells);
+  for (int i = 0; i < cells; ++i) {
+    const double s = -1.0 + 2.0 * (i + 0.5) / cells;
+    layer.rects.push_back(Rect{l.legend_x + cell_w * static_cast<float>(i), l.legend_y, cell_w,
+                               l.legend_h, strain_color(s)});
+  }
+  const bool phi_c = style.threshold > 0;
+  const double scale = phi_c ? style.threshold : style.strain_range;
+  const std::string ticks[3] = {(phi_c ? "-phi_c = " : "phi = ") + format("%.3g", -scale), "0",
+                                (phi_c ? "+phi_c = " : "phi = +") + format("%.3g", scale)};
+  const float tick_y = l.legend_y + l.legend_h;
+  const float label_y = tick_y + 0.6f * ts;
+  for (int t = 0; t < 3; ++t) {
+    const float x = l.legend_x + 0.5f * l.legend_w * static_cast<float>(t);
+    layer.segments.push_back(Segment{x, tick_y, x, tick_y + 0.4f * ts, 1.0f, kDimText});
+    // Left-aligned, centred, right-aligned: the end labels never leave the bar's span.
+    const float w = text_width(ticks[t], ts);
+    const float label_x = x - 0.5f * w * static_cast<float>(t);
+    layer.labels.push_back(Label{ticks[t], label_x, label_y, ts, kDimText});
+  }
+  const float mid_y = l.legend_y + 0.5f * (l.legend_h - ts);
+  const std::string left = "compression", right = "tension";
+  layer.labels.push_back(
+      Label{left, l.legend_x - 0.6f * ts - text_width(left, ts), mid_y, ts, kText});
+  layer.labels.push_back(Label{right, l.legend_x + l.legend_w + 0.6f * ts, mid_y, ts, kText});
+}
+
+}  // namespace
+
+SnapshotLayout snapshot_layout(const SnapshotStyle& style, const ChainParams& params) {
+  assert(style.width > 0 && style.height > 0 && "frame size must be positive");
+  assert(params.beads >= 1 && "a chain needs at least one bead");
+  assert(style.psi_range > 0 && "psi_range sets the scale and must be positive");
+  const double W = style.width, H = style.height;
+  SnapshotLayout l;
+  const double ts = 7.0 * std::max(1.0, std::round(H / 360.0));
+  const double margin = std::max(6.0, std::round(0.025 * std::min(W, H)));
+  l.text_size = static_cast<float>(ts);
+  l.margin = static_cast<float>(margin);
+  l.x_wall = static_cast<float>(margin + std::max(10.0, std::round(0.02 * W)));
+  l.arrow_max = static_cast<float>(std::clamp(std::round(0.08 * W), 30.0, 160.0));
+  l.string_length =
+      params.pull_string ? static_cast<float>(std::clamp(std::round(0.03 * W), 12.0, 60.0)) : 0.0f;
+  // Right of bead N: its radius, the string, the longest arrow and a gap.
+  l.x_right =
+      static_cast<float>(W - margin - l.arrow_max - l.string_length - 0.5 * ts - kMaxBeadRadius);
+
+  l.legend_h = static_cast<float>(std::round(1.2 * ts));
+  l.legend_y = static_cast<float>(H - margin - 1.6 * ts - l.legend_h);
+  l.legend_w = static_cast<float>(std::round(std::min(0.36 * W, 34.0 * ts)));
+  l.legend_x = static_cast<float>(std::round(0.5 * (W - l.legend_w)));
+
+  const double top = margin + 2.2 * ts;  // below the time label
+  const double bottom = std::max(top + 1.0, l.legend_y - 1.4 * ts);
+  if (style.view == View::Both) {
+    const double gap = ts;
+    const double h = std::max(1.0, 0.5 * (bottom - top - gap));
+    l.panels[0] = panel_layout(View::Longitudinal, top, top + h, true, l, style, params.beads);
+    l.panels[1] = panel_layout(View::Transverse, bottom - h, bottom, true, l, style, params.beads);
+    l.panel_count = 2;
+  } else {
+    l.panels[0] = panel_layout(style.view, top, bottom, false, l, style, params.beads);
+    l.panel_count = 1;
+  }
+  for (int i = 0; i < l.panel_count; ++i) l.ribbon |= l.panels[i].spacing < kRibbonSpacing;
+  return l;
+}
+
+namespace snapshot_detail {
+
+double Frame::break_age(int spring) const {
+  // The latest recorded break of this spring (there is normally exactly one).
+  const auto it = std::upper_bound(breaks_by_spring.begin(), breaks_by_spring.end(), spring,
+                                   [](int j, const BreakEvent& b) { return j < b.spring; });
+  if (it == breaks_by_spring.begin() || std::prev(it)->spring != spring) {
+    return std::numeric_limits<double>::infinity();
+  }
+  return std::max(0.0, state.tau - std::prev(it)->tau);
+}
+
+}  // namespace snapshot_detail
+
+RenderSnapshot build_snapshot(const ChainState& state, const ChainParams& params, double force,
+                              const SnapshotStyle& style) {
+  assert(state.psi.size() == static_cast<std::size_t>(params.beads) && "state does not match N");
+  assert(style.force_range > 0 && "force_range sets the arrow scale and must be positive");
+  assert((style.threshold > 0 || style.strain_range > 0) && "the colour scale needs a range");
+  RenderSnapshot out;
+  out.width = style.width;
+  out.height = style.height;
+  out.background = kBackground;
+  out.tau = state.tau;
+  out.force = force;
+  out.beads = params.beads;
+  out.layout = snapshot_layout(style, params);
+  out.ribbon = out.layout.ribbon;
+  out.layers.resize(kLayerCount);
+  for (const BreakEvent& b : state.breaks) {
+    if (b.tau <= state.tau) out.breaks_shown.push_back(b);
+  }
+
+  Frame frame{state, params, style, out.layout, force, 1.0, true, out.breaks_shown, out};
+  frame.strain_scale = style.threshold > 0 ? style.threshold : style.strain_range;
+  std::stable_sort(frame.breaks_by_spring.begin(), frame.breaks_by_spring.end(),
+                   [](const BreakEvent& a, const BreakEvent& b) { return a.spring < b.spring; });
+  frame.string_intact = !state.string_broken && (frame.breaks_by_spring.empty() ||
+                                                 frame.breaks_by_spring.front().spring != 0);
+
+  const SnapshotLayout& l = out.layout;
+  Layer& back = frame.layer(kLayerFrame);
+  for (int i = 0; i < l.panel_count; ++i) {
+    const PanelLayout& p = l.panels[i];
+    add_wall(back, l, p);
+    if (p.view == View::Transverse) {  // the rest line psi = 0, a reference for the eye
+      back.segments.push_back(
+          Segment{l.x_wall, p.centre_y, l.x_right, p.centre_y, 1.0f, kRestLine});
+    }
+    if (l.panel_count > 1) {
+      const std::string caption = p.view == View::Longitudinal ? "longitudinal: x = j + psi_j"
+                                                               : "transverse: psi_j drawn across";
+      back.labels.push_back(Label{caption, l.margin, p.top, l.text_size, kDimText});
+    }
+  }
+  add_legend(back, l, style);
+  frame.layer(kLayerMarks)
+      .labels.push_back(
+          Label{format("tau = %.2f", state.tau), l.margin, l.margin, l.text_size, kText});
+
+  for (int i = 0; i < l.panel_count; ++i) draw_chain_panel(frame, l.panels[i]);
+  return out;
+}
+
+}  // namespace cb

@@ -1,0 +1,151 @@
+// RenderSnapshot: everything one frame shows, as plain data in pixel coordinates (origin
+// top-left, y down), built from the physics state with no GL (MuJoCo's mjvScene). The
+// renderer draws it and nothing else; tests check it exactly without a GPU.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "physics/chain.h"
+
+namespace cb {
+
+enum class View { Longitudinal, Transverse, Both };
+bool parse_view(const std::string& text, View& out);
+const char* view_name(View view);
+
+struct Color {
+  float r = 0, g = 0, b = 0, a = 1;  // linear 0..1 values as written to an 8-bit sRGB image
+};
+
+struct BeadInstance {
+  float x = 0, y = 0;  // centre, pixels
+  float radius = 0;    // pixels
+  Color color;
+};
+
+// A spring between two points, drawn as a coil (or a bar when short), coloured by strain.
+struct SpringInstance {
+  float x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // end points, pixels
+  float width = 0;                       // coil amplitude / bar thickness, pixels
+  float coils = 0;                       // number of turns; 0 draws a straight bar
+  Color color;
+};
+
+struct Segment {  // a straight line of some thickness (wall hatch, arrow shaft, string, ticks)
+  float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  float width = 1;
+  Color color;
+};
+
+struct Triangle {  // filled (arrow heads)
+  float x[3] = {0, 0, 0}, y[3] = {0, 0, 0};
+  Color color;
+};
+
+struct Rect {  // filled axis-aligned rectangle (wall, colour bar cells, flash, panels)
+  float x = 0, y = 0, w = 0, h = 0;
+  Color color;
+};
+
+struct Label {
+  std::string text;
+  float x = 0, y = 0;  // top-left of the text, pixels
+  float size = 12;     // cap height in pixels
+  Color color;
+};
+
+// One drawing layer; layers are drawn in order (back to front), each shape kind in one
+// instanced call.
+struct Layer {
+  std::vector<Rect> rects;
+  std::vector<Segment> segments;
+  std::vector<Triangle> triangles;
+  std::vector<SpringInstance> springs;
+  std::vector<BeadInstance> beads;
+  std::vector<Label> labels;
+};
+
+// Layers, back to front. Tests and overlays may rely on this order.
+enum SnapshotLayer : int {
+  kLayerFrame = 0,  // wall, rest line, legend, panel captions
+  kLayerChain,      // springs, the strain ribbon, recoiling halves of broken springs
+  kLayerBeads,      // beads
+  kLayerForce,      // pull string and force arrow
+  kLayerMarks,      // break flashes and markers, time label
+  kLayerCount
+};
+
+// One chain panel. Longitudinal: bead j at x_wall + (j + psi_j) * spacing, y = centre_y.
+// Transverse: bead j at x_wall + j * spacing, y = centre_y - psi_j * psi_scale.
+struct PanelLayout {
+  View view = View::Longitudinal;  // Longitudinal or Transverse, never Both
+  float top = 0, bottom = 0;       // the panel's extent, pixels
+  float centre_y = 0;              // the chain's rest line
+  float half_height = 0;           // transverse: pixels from the rest line to |psi| = psi_range
+  float spacing = 0;               // pixels per unit of rest length
+  float psi_scale = 0;             // pixels per unit of psi (longitudinal: = spacing)
+  float bead_radius = 0;
+  float spring_width = 0;  // SpringInstance::width of an intact spring
+  float coils = 0;         // SpringInstance::coils of an intact spring (0: bars)
+  float ribbon_width = 0;  // thickness of the strain ribbon, pixels
+  float wall_half_height = 0;
+  float markers_top = 0;  // y of the first row of break markers
+};
+
+// Where everything goes, from the style and N alone: the same for every frame of a video.
+struct SnapshotLayout {
+  float margin = 0;
+  float text_size = 0;      // cap height of labels (a whole multiple of the font's 7 px)
+  float x_wall = 0;         // the wall's face, x of bead 0
+  float x_right = 0;        // bead N at psi_N = psi_range (longitudinal) or at rest (transverse)
+  float arrow_max = 0;      // length of the force arrow at |f| = force_range
+  float string_length = 0;  // pull string from bead N to the arrow (0 without a string)
+  bool ribbon = false;      // beads less than ~3 px apart: draw the strain ribbon
+  int panel_count = 0;
+  PanelLayout panels[2];
+  float legend_x = 0, legend_y = 0, legend_w = 0, legend_h = 0;  // the colour bar
+};
+
+struct RenderSnapshot {
+  int width = 0, height = 0;  // pixels
+  Color background;
+  double tau = 0.0;
+  double force = 0.0;
+  // What is in the layers, for tests and overlays.
+  int beads = 0;        // N
+  bool ribbon = false;  // beads under ~3 px apart: springs drawn as a strain ribbon
+  std::vector<BreakEvent> breaks_shown;  // breaks with tau <= this tau (markers on screen)
+  double arrow_length = 0.0;  // force arrow, tail to tip, pixels (< 0 points left; 0: none)
+  SnapshotLayout layout;
+  std::vector<Layer> layers;  // kLayerCount layers, in SnapshotLayer order
+};
+
+// How a frame is laid out; the same for every frame of a video so nothing jumps.
+struct SnapshotStyle {
+  int width = 1280, height = 720;
+  View view = View::Longitudinal;
+  // The largest |psi| expected in the run (> 0): the longitudinal view fits bead N at
+  // psi_N = psi_range, the transverse view maps |psi| = psi_range to the panel's half height.
+  // Choose it from the wall-side part's maximum: a detached part may then leave the frame.
+  double psi_range = 1.0;
+  double force_range = 1.0;   // the largest |f| expected (arrow length)
+  double threshold = 0.0;     // phi_c for the colour scale; <= 0: scale by strain_range
+  double strain_range = 1.0;  // |phi| that maps to the end of the colour scale when unbreakable
+};
+
+// The strain colour map: s = phi / phi_c in [-1, 1] (clamped). Diverging (compression blue,
+// tension orange) with lightness rising monotonically from s = -1 to s = +1, so compression
+// and tension differ in greyscale print and for colour-blind viewers; saturates visibly
+// (towards a hot, brighter tone) as |s| approaches 1.
+Color strain_color(double s);
+
+// The layout build_snapshot uses for this style and chain.
+SnapshotLayout snapshot_layout(const SnapshotStyle& style, const ChainParams& params);
+
+// Builds the frame for the chain in `state` (bead j's psi in state.psi[j-1]) under force f.
+RenderSnapshot build_snapshot(const ChainState& state, const ChainParams& params, double force,
+                              const SnapshotStyle& style);
+
+}  // namespace cb
