@@ -4,6 +4,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <csignal>
 #include <cstdlib>
@@ -230,7 +231,8 @@ TEST_CASE("MP4: H.264 yuv420p, exact timing, moov first, reproducible, faithful"
 
   CHECK(bytes == read_bytes(b));  // same frames, same settings: the same bytes
 
-  // crf 18 on flat colours: small errors, from 4:2:0 and 8-bit Y'CbCr rounding.
+  // crf 18 on flat colours: small errors, from 4:2:0 and 8-bit Y'CbCr rounding. Measured
+  // mean <= 0.11 and max 8 levels; the bounds leave room for other x264 builds.
   const Fidelity f = compare_flat(make_frame(320, 240, 15), d.picture);
   for (double m : f.mean) CHECK(m < 3.0);
   CHECK(f.max < 40);
@@ -271,15 +273,17 @@ TEST_CASE("WebM: VP9 keeps odd sizes and every frame", "[video]") {
   CHECK(d.frame_rate.num == 30);
   CHECK(d.frame_rate.den == 1);
   CHECK(d.duration == Approx(1.0).margin(1e-3));  // WebM counts time in whole milliseconds
-  // VP9 at crf 32 and real-time speed: looser than H.264 at crf 18.
+  // VP9 at crf 32 and real-time speed: looser than H.264 at crf 18 (measured mean <= 0.2).
   const Fidelity f = compare_flat(make_frame(321, 241, 15), d.picture);
   for (double m : f.mean) CHECK(m < 4.0);
 }
 
 TEST_CASE("GIF: every frame, the size, close colours, loops forever", "[video]") {
   TempDir dir;
-  const std::string path = dir.file("clip.gif");
+  const std::string path = dir.file("clip.gif"), again = dir.file("again.gif");
   encode(path, 320, 240, 30);
+  encode(again, 320, 240, 30);
+  CHECK(read_bytes(path) == read_bytes(again));
   const Decoded d = decode(path, 15);
   CHECK(d.codec == "gif");
   CHECK(d.width == 320);
@@ -287,7 +291,8 @@ TEST_CASE("GIF: every frame, the size, close colours, loops forever", "[video]")
   CHECK(d.frames == 30);
   // Delays of 3,4,3,3,4,... cs, the last one set so that the total is exact.
   CHECK(d.duration == Approx(1.0).margin(1e-9));
-  // Five colours fit the palette exactly: flat regions come back exact (tolerance 1).
+  // Five colours fit the palette exactly: flat regions come back exact (measured 0;
+  // tolerance 1 for the decoder's RGB conversion).
   const Fidelity f = compare_flat(make_frame(320, 240, 15), d.picture);
   for (double m : f.mean) CHECK(m < 1.0);
   CHECK(f.max <= 1);
@@ -367,6 +372,11 @@ TEST_CASE("Video errors: bad extension, missing directory, unfinished file", "[v
     auto sink = cb::open_video(dir.file("never.mp4"), s);
     for (int k = 0; k < 5; ++k) sink->push(make_frame(64, 48, k));
     // destroyed without finish()
+  }
+  CHECK(dir.names() == std::vector<std::string>{"plain"});
+  {
+    auto sink = cb::open_video(dir.file("empty.gif"), s);
+    CHECK_THROWS_WITH(sink->finish(), Catch::Contains("no frames"));
   }
   CHECK(dir.names() == std::vector<std::string>{"plain"});
 

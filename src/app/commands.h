@@ -50,9 +50,13 @@ int snapshot_command(const SnapshotOptions& options);
 struct RenderOptions {
   std::string scene;
   std::vector<Override> overrides;
-  std::string frames_dir;  // PNG sequence here
-  double fps = 0;          // 0: from the scene or -q
-  double speed = 0;        // tau per second of video; 0: from the scene
+  std::string output;      // video file; empty: renders/<scene>.mp4
+  std::string frames_dir;  // PNG sequence here instead of a video
+  int crf = -1;            // x264 CRF; -1: the encoder's default
+  std::string preset;      // x264 preset; empty: the encoder's default
+  bool dry_run = false;
+  double fps = 0;    // 0: from the scene or -q
+  double speed = 0;  // tau per second of video; 0: from the scene
   int threads = 1;
   bool quiet = false;
   FrameOptions frame;

@@ -95,10 +95,21 @@ int main(int argc, char** argv) {
   add_frame_options(snap_cmd, snap.frame);
 
   cb::RenderOptions render;
-  auto* render_cmd = app.add_subcommand("render", "The whole run as frames");
+  auto* render_cmd =
+      app.add_subcommand("render", "The whole run as a video (MP4, WebM, GIF) or PNG frames");
   render_cmd->add_option("scene", render.scene, "Scene file (scenes/*.toml)")->required();
+  render_cmd->add_option(
+      "-o,--output", render.output,
+      "Video file: .mp4 (H.264), .webm (VP9) or .gif (default renders/<scene>.mp4)");
   render_cmd->add_option("--frames", render.frames_dir,
-                         "Write a zero-padded PNG sequence into this folder");
+                         "Write a zero-padded PNG sequence into this folder instead of a video");
+  render_cmd->add_option("--crf", render.crf, "H.264 quality, 0-51, lower is better (default 18)")
+      ->check(CLI::Range(0, 51));
+  render_cmd->add_option("--preset", render.preset,
+                         "x264 preset, ultrafast ... veryslow (default veryfast)");
+  render_cmd->add_flag(
+      "--dry-run", render.dry_run,
+      "Check the scene, the output and the encoder; print the plan; render nothing");
   render_cmd->add_option("--fps", render.fps, "Frames per second of video")
       ->check(CLI::Range(1.0, 240.0));
   render_cmd->add_option("--speed", render.speed, "Simulation speed: tau per second of video")

@@ -9,12 +9,13 @@ namespace cb {
 
 class Progress {
  public:
-  Progress(std::string what, double total, bool quiet);
+  // `unit` names what is counted ("frames"): then the line shows the count and the rate.
+  Progress(std::string what, double total, bool quiet, std::string unit = "");
   ~Progress();
   void update(double done);  // cheap: prints at most a few times a second
 
  private:
-  std::string what_;
+  std::string what_, unit_;
   double total_;
   bool quiet_, tty_;
   bool printed_ = false;

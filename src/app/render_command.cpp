@@ -1,61 +1,122 @@
-// `chainbreak render`: the whole run as frames (a PNG sequence; videos in a later issue).
+// `chainbreak render`: the whole run as a video (MP4, WebM, GIF) or a PNG sequence.
+//
+// Design note: three stages overlap. A producer thread steps the physics and builds each
+// frame's snapshot; this thread draws it with GL and reads the pixels back; the sink
+// converts and encodes (VideoEncoder) or compresses PNGs (PngSequence) on its own threads.
+// Bounded queues between them keep memory flat, so the slowest stage, normally the
+// encoder, sets the pace.
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <thread>
 
+#include "app/bounded_queue.h"
 #include "app/commands.h"
 #include "app/frames.h"
 #include "app/progress.h"
+#include "app/render_plan.h"
 #include "output/frame_writer.h"
+#include "output/video_encoder.h"
 #include "physics/integrator.h"
 
 namespace cb {
 
+namespace {
+
+// The physics side of the pipeline: steps to each frame's time and builds its snapshot.
+// Runs on its own thread; stops early on interruption or a non-finite state.
+struct Producer {
+  const SceneDesc& scene;
+  const RenderPlan& plan;
+  int threads;
+  BoundedQueue<RenderSnapshot>& queue;
+  std::string error;
+  std::vector<BreakEvent> breaks;
+
+  void operator()() {
+    Integrator sim(scene.chain, make_forcing(scene.drive), {plan.dt, threads});
+    for (std::int64_t k = 0; k < plan.frames && !g_interrupted; ++k) {
+      if (!sim.advance_to(k * plan.substeps)) {
+        error = sim.error();
+        break;
+      }
+      if (!queue.push(build_snapshot(sim.state(), scene.chain, sim.force_now(), plan.style))) break;
+    }
+    breaks = sim.state().breaks;
+    queue.close();
+  }
+};
+
+std::unique_ptr<FrameSink> open_sink(const RenderOptions& o, const SceneDesc& scene,
+                                     const RenderPlan& plan) {
+  if (!o.frames_dir.empty()) return std::make_unique<PngSequence>(o.frames_dir, scene.name, 2);
+  VideoSettings v;
+  v.width = plan.frame.width;
+  v.height = plan.frame.height;
+  v.fps = static_cast<int>(plan.frame.fps);
+  if (o.crf >= 0) v.crf = o.crf;
+  if (!o.preset.empty()) v.preset = o.preset;
+  return std::make_unique<VideoEncoder>(plan.output, v);
+}
+
+}  // namespace
+
 int render_command(const RenderOptions& o) {
   const SceneDesc scene = load_scene(o.scene, o.overrides);
-  RenderDesc frame = frame_settings(scene, o.frame);
-  if (o.fps > 0) frame.fps = o.fps;
-  if (o.speed > 0) frame.speed = o.speed;
-  if (o.frames_dir.empty())
-    throw SceneError("render: give --frames DIR (video output comes with a later version)");
-  PngSequence sink(o.frames_dir, scene.name, 2);  // checks the folder before any work
-
-  // Frame k shows tau = k * speed / fps, reached in a whole number of integrator steps: the
-  // step is shrunk (never grown) so that every frame lands exactly on its time.
-  const double tau_per_frame = frame.speed / frame.fps;
-  const auto substeps =
-      static_cast<std::int64_t>(std::ceil(tau_per_frame / scene.integrator.dt - 1e-9));
-  const double dt = tau_per_frame / static_cast<double>(substeps);
-  const RunExtent extent = measure_run(scene, scene.integrator.t_end, dt);
-  const auto frames =
-      static_cast<std::int64_t>(std::floor(extent.tau_stop / tau_per_frame + 1e-9)) + 1;
-  const SnapshotStyle style = snapshot_style(scene, frame, extent);
-  Canvas canvas = make_canvas(o.frame, frame.width, frame.height);
-  if (!o.quiet)
-    std::fprintf(stderr, "render %s: %lld frames %dx%d at %g fps, %g tau/s, dt %g, GL %s\n",
-                 scene.name.c_str(), static_cast<long long>(frames), frame.width, frame.height,
-                 frame.fps, frame.speed, dt, describe(*canvas.context).c_str());
-
-  Integrator sim(scene.chain, make_forcing(scene.drive), {dt, o.threads});
-  Progress progress("render " + scene.name, static_cast<double>(frames), o.quiet);
-  for (std::int64_t k = 0; k < frames; ++k) {
-    if (g_interrupted) {
-      std::fprintf(stderr, "chainbreak: interrupted after %lld frames\n",
-                   static_cast<long long>(k));
-      sink.finish();
-      return 130;
-    }
-    if (!sim.advance_to(k * substeps)) {
-      std::fprintf(stderr, "chainbreak: %s\n", sim.error().c_str());
-      return 1;
-    }
-    sink.push(
-        canvas.renderer->render(build_snapshot(sim.state(), scene.chain, sim.force_now(), style)));
-    progress.update(static_cast<double>(k + 1));
+  const RenderPlan plan = plan_render(scene, o);
+  // Opening the sink checks the output folder and the encoder before any work.
+  std::unique_ptr<FrameSink> sink = open_sink(o, scene, plan);
+  if (o.dry_run) {
+    std::printf("%s\n", plan_json(scene, plan, "", {}).c_str());
+    return 0;  // the sink's destructor removes its temporary file
   }
-  sink.finish();
+  Canvas canvas = make_canvas(o.frame, plan.frame.width, plan.frame.height);
+  const std::string gl = describe(*canvas.context);
   if (!o.quiet)
-    std::fprintf(stderr, "render %s: %lld frames written to %s\n", scene.name.c_str(),
-                 static_cast<long long>(frames), o.frames_dir.c_str());
+    std::fprintf(stderr, "render %s: %lld frames %dx%d at %g fps (%g tau/s, dt %g) -> %s\n",
+                 scene.name.c_str(), static_cast<long long>(plan.frames), plan.frame.width,
+                 plan.frame.height, plan.frame.fps, plan.frame.speed, plan.dt, plan.output.c_str());
+
+  BoundedQueue<RenderSnapshot> snapshots(3);
+  Producer producer{scene, plan, o.threads, snapshots, {}, {}};
+  std::thread physics(std::ref(producer));
+  Progress progress("render " + scene.name, static_cast<double>(plan.frames), o.quiet, "frames");
+  std::int64_t done = 0;
+  try {
+    while (auto snap = snapshots.pop()) {
+      sink->push(canvas.renderer->render(*snap));
+      progress.update(static_cast<double>(++done));
+    }
+  } catch (...) {
+    snapshots.close();
+    physics.join();
+    throw;
+  }
+  physics.join();
+
+  if (!producer.error.empty()) {
+    std::fprintf(stderr, "chainbreak: %s\n", producer.error.c_str());
+    return 1;  // the sink's destructor leaves nothing under the requested name
+  }
+  if (g_interrupted) {
+    auto* video = dynamic_cast<VideoEncoder*>(sink.get());
+    if (video) {
+      const std::string partial = video->abort_partial();
+      std::fprintf(stderr,
+                   "chainbreak: interrupted after %lld frames; the part rendered is in %s\n",
+                   static_cast<long long>(done), partial.c_str());
+    } else {
+      sink->finish();
+      std::fprintf(stderr, "chainbreak: interrupted after %lld frames (complete PNGs kept in %s)\n",
+                   static_cast<long long>(done), o.frames_dir.c_str());
+    }
+    return 130;
+  }
+  sink->finish();
+  write_sidecar(scene, plan, gl, producer.breaks);
+  if (!o.quiet)
+    std::fprintf(stderr, "render %s: wrote %s\n", scene.name.c_str(), plan.output.c_str());
+  std::printf("%s\n", plan.output.c_str());
   return 0;
 }
 

@@ -168,7 +168,7 @@ struct VideoEncoder::Impl {
   void stop_worker(bool drop_queued);
   std::int64_t end_time(std::int64_t pts) const;  // end of frame `pts`, in the stream's units
   void complete();  // flush, trailer, close: the temporary file is then a whole video
-  std::string commit(const std::string& target);
+  std::string commit(const std::string& target, bool partial);
   void release();
   void remove_temp();
 
@@ -355,12 +355,11 @@ void VideoEncoder::Impl::convert_yuv(const Image& image) {
 
 void VideoEncoder::Impl::convert_gif(const Image& image) {
   if (!quantizer) quantizer = std::make_unique<gif::Quantizer>(gif::make_palette(image));
-  double poor = quantizer->map(image, frame->data[0], frame->linesize[0]);
   // More than 1 % of the picture far from every palette colour: new colours have come, so
   // make a new palette from this frame (costlier frames from here on; gif_palette.h).
-  if (poor > 0.01) {
+  if (quantizer->map(image, frame->data[0], frame->linesize[0]) > 0.01) {
     quantizer = std::make_unique<gif::Quantizer>(gif::make_palette(image));
-    poor = quantizer->map(image, frame->data[0], frame->linesize[0]);
+    quantizer->map(image, frame->data[0], frame->linesize[0]);
   }
   std::memcpy(frame->data[1], quantizer->palette().data(), AVPALETTE_SIZE);
 }
@@ -430,12 +429,19 @@ void VideoEncoder::Impl::complete() {
   ::close(fd);
 }
 
-std::string VideoEncoder::Impl::commit(const std::string& target) {
+std::string VideoEncoder::Impl::commit(const std::string& target, bool partial) {
   if (done) throw std::logic_error("VideoEncoder: finish() or abort_partial() called twice");
   done = true;
   try {
     stop_worker(false);
     if (error) std::rethrow_exception(error);
+    if (next_pts == 0) {
+      // A container without frames is no video (and some muxers refuse it).
+      release();
+      remove_temp();
+      if (partial) return {};
+      throw OutputError(path + ": no frames were given, so no video was written");
+    }
     complete();
     if (std::rename(temp.c_str(), target.c_str()) != 0)
       throw OutputError(target + ": cannot rename the finished video into place (" +
@@ -516,11 +522,11 @@ void VideoEncoder::push(Image image) {
 
 void VideoEncoder::finish() {
   if (impl_->done) return;
-  impl_->commit(impl_->path);
+  impl_->commit(impl_->path, false);
 }
 
 std::string VideoEncoder::abort_partial(const std::string& partial_path) {
-  return impl_->commit(partial_path.empty() ? partial_video_path(impl_->path) : partial_path);
+  return impl_->commit(partial_path.empty() ? partial_video_path(impl_->path) : partial_path, true);
 }
 
 const std::string& VideoEncoder::path() const {

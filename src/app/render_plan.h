@@ -1,0 +1,38 @@
+// Everything `render` decides before drawing a frame: size, frame times, the integrator step
+// that lands on them, the layout, where the output goes; and the JSON that describes it.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "app/commands.h"
+#include "app/frames.h"
+
+namespace cb {
+
+struct RenderPlan {
+  RenderDesc frame;            // size, fps, speed, view after options
+  double tau_per_frame = 0.0;  // speed / fps
+  std::int64_t substeps = 1;   // integrator steps per frame
+  double dt = 0.0;             // tau_per_frame / substeps (never above the scene's dt)
+  std::int64_t frames = 0;     // frame k shows tau = k * tau_per_frame
+  RunExtent extent;            // what keeps the chain in the frame; where the run stops
+  SnapshotStyle style;
+  std::string output;      // the video path, or the PNG folder
+  std::string codec;       // "h264", "vp9", "gif" or "png"
+  std::string scene_hash;  // of the scene file and the overrides
+};
+
+// Validates the options against the scene and measures the run (a physics pre-pass).
+// Throws SceneError for a user mistake.
+RenderPlan plan_render(const SceneDesc& scene, const RenderOptions& options);
+
+// The JSON sidecar: scene, parameters after overrides, frames, timing, codec, GL, breaks.
+std::string plan_json(const SceneDesc& scene, const RenderPlan& plan, const std::string& gl,
+                      const std::vector<BreakEvent>& breaks);
+// Writes plan_json next to the output: "<video stem>.json" or "<folder>/<scene>.json".
+void write_sidecar(const SceneDesc& scene, const RenderPlan& plan, const std::string& gl,
+                   const std::vector<BreakEvent>& breaks);
+
+}  // namespace cb

@@ -1,0 +1,216 @@
+// Golden frames: whole scenes rendered at 480x270 and compared with the PNGs in tests/golden/
+// within a stated tolerance, on both backends. States come from the Integrator with the
+// scenes' parameters (no app process), except N = 1e5, which uses the continuum solution.
+// CHAINBREAK_UPDATE_GOLDENS=1 rewrites the goldens from OSMesa instead (tests/golden/README.md).
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "drive/drive.h"
+#include "gl/gl_context.h"
+#include "output/image.h"
+#include "output/png_writer.h"
+#include "physics/integrator.h"
+#include "render/renderer.h"
+#include "snapshot/snapshot.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The tolerance. Physics and snapshot are bit-reproducible (-ffp-contract=off) and llvmpipe
+// rasterises in fixed point, so on this machine the frames match exactly (OSMesa against
+// EGL: within 1/255 on a few pixels). Another CPU changes the LLVM code llvmpipe generates
+// (vector width, FMA), which moves shading and antialiased edges by a step or two: allow 2
+// per channel everywhere, and more only on 0.1% of the pixels (130 of 480x270), where a
+// float edge lands within rounding of a pixel centre. A lost or moved shape (a bead here is
+// ~40 px, a label ~200) or a wrong colour exceeds that.
+constexpr int kChannelTolerance = 2;
+constexpr double kMaxFractionOver = 0.001;
+constexpr int kWidth = 480, kHeight = 270;
+
+bool env_is_1(const char* name) {
+  const char* value = std::getenv(name);
+  return value != nullptr && std::string(value) == "1";
+}
+
+std::unique_ptr<cb::GlContext> create_or_skip(cb::GlBackend backend) {
+  try {
+    return cb::create_gl_context(backend);
+  } catch (const cb::GlError& error) {
+    if (env_is_1("CHAINBREAK_REQUIRE_GL")) FAIL("CHAINBREAK_REQUIRE_GL=1 but: " << error.what());
+    WARN("skipped, no " << cb::gl_backend_name(backend) << " context: " << error.what());
+    return nullptr;
+  }
+}
+
+fs::path golden_dir() {
+  return fs::path(__FILE__).parent_path() / "golden";
+}
+
+// Beside the test binary (build/tests/golden-actual), whatever the working directory.
+fs::path actual_dir() {
+  std::error_code error;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", error);
+  return (error ? fs::current_path() : exe.parent_path()) / "golden-actual";
+}
+
+// Compares with tests/golden/NAME.png; on failure writes the frame to golden-actual/ for a
+// human to look at. With CHAINBREAK_UPDATE_GOLDENS=1 the OSMesa frame becomes the golden.
+void check_golden(const std::string& name, cb::GlBackend backend, const cb::Image& actual) {
+  const fs::path golden = golden_dir() / (name + ".png");
+  if (env_is_1("CHAINBREAK_UPDATE_GOLDENS") && backend == cb::GlBackend::OSMesa) {
+    cb::write_png(golden.string(), actual);
+    WARN("wrote " << golden.string() << ": inspect it before committing");
+    return;
+  }
+  if (!fs::exists(golden))
+    FAIL(golden.string() << " is missing; make it with CHAINBREAK_UPDATE_GOLDENS=1 "
+                            "(tests/golden/README.md)");
+  const cb::ImageDiff d = cb::compare_images(actual, cb::read_png(golden.string()),
+                                             kChannelTolerance);
+  const bool ok = d.same_size && d.fraction_over <= kMaxFractionOver;
+  std::string written;
+  if (!ok) {
+    fs::create_directories(actual_dir());
+    written = (actual_dir() / (name + "." + cb::gl_backend_name(backend) + ".png")).string();
+    cb::write_png(written, actual);
+  }
+  INFO(name << " (" << cb::gl_backend_name(backend) << "): max channel difference "
+            << d.max_channel << ", " << 100.0 * d.fraction_over << "% of pixels over "
+            << kChannelTolerance << " (allowed " << 100.0 * kMaxFractionOver << "%)"
+            << (d.same_size ? "" : ", sizes differ") << (ok ? "" : "; actual frame: " + written));
+  CHECK(ok);
+}
+
+// The ranges the app's measure_run (src/app/frames.cpp) finds for a run: largest |psi|,
+// |f| and |phi| up to the first break, so the layout is the one `chainbreak snapshot` uses.
+cb::SnapshotStyle measured_style(const cb::ChainParams& params, const cb::DriveDesc& drive,
+                                 double tau_end, cb::View view) {
+  cb::Integrator sim(params, cb::make_forcing(drive), {0.01, 1});
+  double psi = 0.0, force = 0.0, strain = 0.0;
+  while (sim.state().tau < tau_end - 1e-9 && sim.state().breaks.empty()) {
+    REQUIRE(sim.step());
+    const auto& x = sim.state().psi;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      psi = std::max(psi, std::abs(x[i]));
+      strain = std::max(strain, std::abs(x[i] - (i ? x[i - 1] : 0.0)));
+    }
+    force = std::max(force, std::abs(sim.force_now()));
+  }
+  cb::SnapshotStyle style;
+  style.width = kWidth;
+  style.height = kHeight;
+  style.view = view;
+  style.psi_range = std::max(psi, 1e-6);
+  style.force_range = std::max(force, 1e-6);
+  style.threshold = params.breakable() ? params.threshold : 0.0;
+  style.strain_range = params.breakable() ? params.threshold : std::max(strain, 1e-6);
+  return style;
+}
+
+cb::ChainParams chain(int beads, double threshold, bool pull_string = false) {
+  cb::ChainParams p;
+  p.beads = beads;
+  p.threshold = threshold;
+  p.pull_string = pull_string;
+  return p;
+}
+
+cb::DriveDesc drive(cb::DriveType type, double value) {
+  cb::DriveDesc d;
+  d.type = type;
+  d.amplitude = value;
+  d.beta = value;
+  return d;
+}
+
+// Steps to `step` (or the first step past the first break plus `after` when after >= 0) and
+// builds the frame there.
+cb::RenderSnapshot frame_at(const cb::ChainParams& params, const cb::DriveDesc& d,
+                            const cb::SnapshotStyle& style, std::int64_t step, double after = -1) {
+  cb::Integrator sim(params, cb::make_forcing(d), {0.01, 1});
+  if (after >= 0) {
+    while (sim.state().breaks.empty() && sim.state().step < 100000) REQUIRE(sim.step());
+    REQUIRE_FALSE(sim.state().breaks.empty());
+    step = sim.state().step + std::llround(after / 0.01);
+  }
+  REQUIRE(sim.advance_to(step));
+  return cb::build_snapshot(sim.state(), params, sim.force_now(), style);
+}
+
+// scenes/step_pulse.toml (N = 30, f = u(tau), unbreakable) at tau = 45, both views: the front
+// reflected off the wall at tau = 30 runs back with extension 2 behind it.
+cb::RenderSnapshot step_pulse_reflecting() {
+  const auto params = chain(30, std::numeric_limits<double>::infinity());
+  const auto d = drive(cb::DriveType::Step, 1.0);
+  return frame_at(params, d, measured_style(params, d, 120.0, cb::View::Both), 4500);
+}
+
+// scenes/anomalous_breaking.toml (N = 30, phi_c = 3, ramp 0.02) 0.5 after spring 30 breaks at
+// tau ~ 150: the flash, the recoiling halves, the marker and its label.
+cb::RenderSnapshot anomalous_just_broken() {
+  const auto params = chain(30, 3.0);
+  const auto d = drive(cb::DriveType::Ramp, 0.02);
+  return frame_at(params, d, measured_style(params, d, 400.0, cb::View::Longitudinal), 0, 0.5);
+}
+
+// scenes/ball_pull.toml (N = 1 with a pull string, phi_c = 1, ramp 0.1) at tau = 8, before
+// either string breaks (~10.5): the ball, the string, the force arrow.
+cb::RenderSnapshot ball_with_pull_string() {
+  const auto params = chain(1, 1.0, true);
+  const auto d = drive(cb::DriveType::Ramp, 0.1);
+  return frame_at(params, d, measured_style(params, d, 30.0, cb::View::Longitudinal), 800);
+}
+
+// N = 1e5 after a step f = 1, both views, at tau = 1.5 N. No integrator: reaching the wall
+// takes N time units (1e12 bead-steps). The continuum solution (Eq. (exactpsi), d'Alembert)
+// instead: extension 1 behind the incoming front, 2 behind the front reflected at tau = N,
+// i.e. phi_j = 2 for j <= tau - N, 1 beyond; psi_j = j + min(j, tau - N).
+cb::RenderSnapshot ribbon_1e5() {
+  const int n = 100000;
+  const double tau = 1.5 * n;
+  cb::ChainState state;
+  state.tau = tau;
+  state.psi.resize(n);
+  state.vel.assign(n, 0.0);
+  for (int j = 1; j <= n; ++j) state.psi[j - 1] = j + std::min<double>(j, tau - n);
+  cb::SnapshotStyle style;
+  style.width = kWidth;
+  style.height = kHeight;
+  style.view = cb::View::Both;
+  style.psi_range = state.psi.back();
+  style.force_range = 1.0;
+  style.strain_range = 2.0;  // unbreakable: the colour scale ends at the largest |phi|
+  return cb::build_snapshot(state, chain(n, std::numeric_limits<double>::infinity()), 1.0, style);
+}
+
+}  // namespace
+
+TEST_CASE("Golden frames match within tolerance", "[golden]") {
+  const cb::GlBackend backend = GENERATE(cb::GlBackend::OSMesa, cb::GlBackend::Egl);
+  INFO("backend " << cb::gl_backend_name(backend));
+  auto context = create_or_skip(backend);
+  if (!context) return;
+  cb::Renderer renderer(kWidth, kHeight);
+
+  const auto anomalous = anomalous_just_broken();
+  REQUIRE(anomalous.breaks_shown.size() == 1);
+  CHECK(anomalous.breaks_shown[0].spring == 30);  // what the scene is about
+  check_golden("anomalous_just_broken", backend, renderer.render(anomalous));
+
+  check_golden("step_pulse_reflecting", backend, renderer.render(step_pulse_reflecting()));
+
+  const auto ball = ball_with_pull_string();
+  CHECK(ball.breaks_shown.empty());
+  CHECK(ball.arrow_length > 0.0);
+  check_golden("ball_with_pull_string", backend, renderer.render(ball));
+
+  const auto ribbon = ribbon_1e5();
+  CHECK(ribbon.ribbon);
+  check_golden("ribbon_1e5", backend, renderer.render(ribbon));
+}
