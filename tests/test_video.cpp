@@ -300,6 +300,34 @@ TEST_CASE("GIF: every frame, the size, close colours, loops forever", "[video]")
   CHECK(bytes.find("NETSCAPE2.0") != std::string::npos);  // the looping extension
 }
 
+TEST_CASE("GIF: colours that appear later get a new palette", "[video]") {
+  // From frame 5 on, a violet block far from the first frame's palette and from the fixed
+  // 4x4x4 cube (64 levels from the nearest cube colour) covers 13 % of the picture.
+  TempDir dir;
+  const std::string path = dir.file("late.gif");
+  cb::VideoSettings s;
+  s.width = 64, s.height = 48;
+  auto sink = cb::open_video(path, s);
+  for (int k = 0; k < 10; ++k) {
+    Image im(64, 48);
+    fill(im, 0, 0, 64, 48, 40, 60, 90);
+    if (k >= 5) fill(im, 10, 10, 20, 20, 130, 40, 200);
+    sink->push(std::move(im));
+  }
+  sink->finish();
+  const Decoded d = decode(path, 7);
+  CHECK(d.frames == 10);
+  REQUIRE(d.picture.width == 64);
+  const std::uint8_t* block = d.picture.pixel(20, 20);
+  const std::uint8_t* background = d.picture.pixel(50, 40);
+  CHECK(std::abs(block[0] - 130) <= 1);
+  CHECK(std::abs(block[1] - 40) <= 1);
+  CHECK(std::abs(block[2] - 200) <= 1);
+  CHECK(std::abs(background[0] - 40) <= 1);
+  CHECK(std::abs(background[1] - 60) <= 1);
+  CHECK(std::abs(background[2] - 90) <= 1);
+}
+
 TEST_CASE("GIF palette: exact for few colours, dithers the rest", "[video]") {
   // Left half: four flat colours; right half: a red-green gradient of 8192 colours, far more
   // than a palette holds.
