@@ -102,9 +102,12 @@ int render_command(const RenderOptions& o) {
     auto* video = dynamic_cast<VideoEncoder*>(sink.get());
     if (video) {
       const std::string partial = video->abort_partial();
-      std::fprintf(stderr,
-                   "chainbreak: interrupted after %lld frames; the part rendered is in %s\n",
-                   static_cast<long long>(done), partial.c_str());
+      if (partial.empty())
+        std::fprintf(stderr, "chainbreak: interrupted before the first frame; nothing written\n");
+      else
+        std::fprintf(stderr,
+                     "chainbreak: interrupted after %lld frames; what was rendered plays as %s\n",
+                     static_cast<long long>(done), partial.c_str());
     } else {
       sink->finish();
       std::fprintf(stderr, "chainbreak: interrupted after %lld frames (complete PNGs kept in %s)\n",
