@@ -18,8 +18,9 @@ void main() {
   vec2 dir = len > 0.0 ? d / len : vec2(1.0, 0.0);
   vec2 nrm = vec2(-dir.y, dir.x);
   float aa = style.y;
-  float half_width = 0.5 * style.x + aa;  // grow by the margin so the edge can fade
-  vec2 p = ends.xy + dir * (corner.x * (len + 2.0 * aa) - aa) + nrm * (corner.y * half_width);
+  float half_width = 0.5 * style.x + aa;  // grow across by the margin so the edge can fade
+  // Along the segment it ends exactly at its end points (no fade there, so no overshoot).
+  vec2 p = ends.xy + dir * (corner.x * len) + nrm * (corner.y * half_width);
   v_color = color;
   v_across = corner.y * half_width;
   v_half = 0.5 * style.x;

@@ -66,8 +66,8 @@ int diff(const cb::Image& image, int x, int y, const cb::Color& c) {
 std::string describe_pixel(const cb::Image& image, int x, int y) {
   const std::uint8_t* p = image.pixel(x, y);
   std::ostringstream out;
-  out << "(" << x << ", " << y << ") = " << int(p[0]) << " " << int(p[1]) << " " << int(p[2])
-      << " " << int(p[3]);
+  out << "(" << x << ", " << y << ") = " << int(p[0]) << " " << int(p[1]) << " " << int(p[2]) << " "
+      << int(p[3]);
   return out.str();
 }
 
@@ -103,14 +103,16 @@ cb::RenderSnapshot anomalous_frame(int width, int height) {
   drive.type = cb::DriveType::Ramp;
   drive.beta = 0.02;
   cb::Integrator sim(params, cb::make_forcing(drive), {0.01, 1});
-  while (sim.state().breaks.empty() && sim.state().step < 40000) REQUIRE(sim.step());
+  bool ok = true;
+  while (ok && sim.state().breaks.empty() && sim.state().step < 40000) ok = sim.step();
+  REQUIRE(ok);
   REQUIRE_FALSE(sim.state().breaks.empty());
   REQUIRE(sim.advance_to(sim.state().step + 50));
   cb::SnapshotStyle style;
   style.width = width;
   style.height = height;
-  style.psi_range = 8.0;     // covers psi_N up to the break (~7.5)
-  style.force_range = 3.0;   // f = 0.02 tau at the break
+  style.psi_range = 8.0;    // covers psi_N up to the break (~7.5)
+  style.force_range = 3.0;  // f = 0.02 tau at the break
   style.threshold = 3.0;
   return cb::build_snapshot(sim.state(), params, sim.force_now(), style);
 }
@@ -229,6 +231,28 @@ TEST_CASE("Trivial shapes land on exactly their pixels", "[render]") {
   }
 }
 
+// A segment's antialiasing margin widens it across, never along: it stops at its end points
+// (an earlier quad.vert lengthened it by one fully covered pixel at each end).
+TEST_CASE("A segment stops at its end points", "[render]") {
+  const cb::GlBackend backend = GENERATE(cb::GlBackend::OSMesa, cb::GlBackend::Egl);
+  INFO("backend " << cb::gl_backend_name(backend));
+  auto context = create_or_skip(backend);
+  if (!context) return;
+  constexpr int kW = 128, kH = 32;
+  const cb::Color bg = rgb255(20, 24, 28);
+  cb::RenderSnapshot snap = blank_snapshot(kW, kH, bg);
+  const cb::Segment seg{50, 12.5f, 110, 12.5f, 5.0f, rgb255(30, 180, 90)};
+  snap.layers[cb::kLayerChain].segments.push_back(seg);
+  cb::Renderer renderer(kW, kH);
+  const cb::Image image = renderer.render(snap);
+  // Pixel centres 0.5 px inside the ends are covered, 0.5 px outside are not.
+  CHECK(diff(image, 50, 12, seg.color) == 0);
+  CHECK(diff(image, 109, 12, seg.color) == 0);
+  INFO(describe_pixel(image, 49, 12) << ", " << describe_pixel(image, 110, 12));
+  CHECK(diff(image, 49, 12, bg) == 0);
+  CHECK(diff(image, 110, 12, bg) == 0);
+}
+
 TEST_CASE("A label draws its colour inside its box and nothing outside", "[render]") {
   const cb::GlBackend backend = GENERATE(cb::GlBackend::OSMesa, cb::GlBackend::Egl);
   INFO("backend " << cb::gl_backend_name(backend));
@@ -249,8 +273,8 @@ TEST_CASE("A label draws its colour inside its box and nothing outside", "[rende
   std::string first_outside;
   for (int y = 0; y < kH; ++y)
     for (int x = 0; x < kW; ++x) {
-      const bool in_box = x >= label.x && x < label.x + width && y >= label.y &&
-                          y < label.y + label.size;
+      const bool in_box =
+          x >= label.x && x < label.x + width && y >= label.y && y < label.y + label.size;
       if (diff(image, x, y, label.color) == 0) {
         if (in_box) {
           ++ink;
@@ -294,6 +318,7 @@ TEST_CASE("A spring shows strain_color of its extension", "[render]") {
     const auto& springs = snap.layers[cb::kLayerChain].springs;
     REQUIRE(springs.size() == static_cast<std::size_t>(n));  // all intact, all in frame
     const cb::SpringInstance& s = springs[k - 1];
+    REQUIRE((s.coils == 0.0f) == (n == 60));  // each path of renderer.cpp's append_spring
     const cb::Image image = renderer.render(snap);
 
     if (s.coils == 0.0f) {
@@ -470,7 +495,8 @@ TEST_CASE("N = 1e6 renders a 1080p ribbon from an O(width) snapshot", "[render]"
     bytes += l.rects.capacity() * sizeof(cb::Rect) + l.segments.capacity() * sizeof(cb::Segment) +
              l.triangles.capacity() * sizeof(cb::Triangle) +
              l.springs.capacity() * sizeof(cb::SpringInstance) +
-             l.beads.capacity() * sizeof(cb::BeadInstance) + l.labels.capacity() * sizeof(cb::Label);
+             l.beads.capacity() * sizeof(cb::BeadInstance) +
+             l.labels.capacity() * sizeof(cb::Label);
   }
   CAPTURE(elements, bytes);
   CHECK(elements <= 4u * style.width);
@@ -483,7 +509,8 @@ TEST_CASE("N = 1e6 renders a 1080p ribbon from an O(width) snapshot", "[render]"
   const double x = snap.layout.x_wall + (k + state.psi[k - 1]) * p.spacing;
   const int px = static_cast<int>(x), py = static_cast<int>(p.centre_y);
   int best = 255;
-  for (int dx = -1; dx <= 1; ++dx) best = std::min(best, diff(image, px + dx, py, cb::strain_color(0.7)));
+  for (int dx = -1; dx <= 1; ++dx)
+    best = std::min(best, diff(image, px + dx, py, cb::strain_color(0.7)));
   INFO(describe_pixel(image, px, py));
   CHECK(best <= 2);
 }

@@ -1,4 +1,4 @@
-// The video encoder: what it writes is decoded again here with libavformat/libavcodec and
+// The video encoder: what it writes is decoded again (video_probe.h, libavformat/libavcodec) and
 // checked for container, codec, size, frame count, timing, layout, reproducibility and
 // picture fidelity; failures must leave no file under the requested name.
 #include <sys/resource.h>
@@ -17,16 +17,14 @@
 #include "output/gif_palette.h"
 #include "output/output_file.h"
 #include "output/video_encoder.h"
-
-extern "C" {
-#include <libavcodec/avcodec.h>
-#include <libavformat/avformat.h>
-#include <libavutil/pixdesc.h>
-#include <libswscale/swscale.h>
-}
+#include "video_probe.h"
 
 namespace fs = std::filesystem;
 using cb::Image;
+using cb::test::decode;
+using cb::test::Decoded;
+using cb::test::read_bytes;
+using cb::test::top_level_boxes;
 
 namespace {
 
@@ -79,73 +77,6 @@ void encode(const std::string& path, int w, int h, int frames,
   sink->finish();
 }
 
-struct Decoded {
-  std::string container, codec, pix_fmt;
-  int width = 0, height = 0, frames = 0;
-  AVRational frame_rate{0, 1};
-  double duration = 0;
-  AVColorSpace colorspace = AVCOL_SPC_UNSPECIFIED;
-  Image picture;  // frame `keep` converted to RGBA
-};
-
-Decoded decode(const std::string& path, int keep) {
-  Decoded out;
-  AVFormatContext* fmt = nullptr;
-  REQUIRE(avformat_open_input(&fmt, path.c_str(), nullptr, nullptr) == 0);
-  REQUIRE(avformat_find_stream_info(fmt, nullptr) >= 0);
-  REQUIRE(fmt->nb_streams == 1);
-  const AVStream* st = fmt->streams[0];
-  out.container = fmt->iformat->name;
-  out.codec = avcodec_get_name(st->codecpar->codec_id);
-  const char* pix = av_get_pix_fmt_name(static_cast<AVPixelFormat>(st->codecpar->format));
-  out.pix_fmt = pix ? pix : "";
-  out.frame_rate = st->avg_frame_rate;
-  out.duration = st->duration != AV_NOPTS_VALUE ? st->duration * av_q2d(st->time_base)
-                                                : fmt->duration / double(AV_TIME_BASE);
-  const AVCodec* decoder = avcodec_find_decoder(st->codecpar->codec_id);
-  REQUIRE(decoder);
-  AVCodecContext* dec = avcodec_alloc_context3(decoder);
-  REQUIRE(avcodec_parameters_to_context(dec, st->codecpar) >= 0);
-  REQUIRE(avcodec_open2(dec, decoder, nullptr) == 0);
-  AVPacket* pkt = av_packet_alloc();
-  AVFrame* frame = av_frame_alloc();
-  auto drain = [&] {
-    while (avcodec_receive_frame(dec, frame) == 0) {
-      out.width = frame->width, out.height = frame->height;
-      out.colorspace = frame->colorspace;
-      if (out.frames++ == keep) {
-        out.picture = Image(frame->width, frame->height);
-        SwsContext* sws = sws_getContext(
-            frame->width, frame->height, static_cast<AVPixelFormat>(frame->format), frame->width,
-            frame->height, AV_PIX_FMT_RGBA, SWS_BILINEAR | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT,
-            nullptr, nullptr, nullptr);
-        REQUIRE(sws);
-        // Interpret Y'CbCr as the file is tagged (BT.709 limited range for our videos).
-        const int* coefficients = sws_getCoefficients(
-            frame->colorspace == AVCOL_SPC_BT709 ? SWS_CS_ITU709 : SWS_CS_DEFAULT);
-        sws_setColorspaceDetails(sws, coefficients, frame->color_range == AVCOL_RANGE_JPEG,
-                                 coefficients, 1, 0, 1 << 16, 1 << 16);
-        std::uint8_t* dst[1] = {out.picture.rgba.data()};
-        const int stride[1] = {frame->width * 4};
-        sws_scale(sws, frame->data, frame->linesize, 0, frame->height, dst, stride);
-        sws_freeContext(sws);
-      }
-    }
-  };
-  while (av_read_frame(fmt, pkt) >= 0) {
-    REQUIRE(avcodec_send_packet(dec, pkt) >= 0);
-    av_packet_unref(pkt);
-    drain();
-  }
-  avcodec_send_packet(dec, nullptr);
-  drain();
-  av_frame_free(&frame);
-  av_packet_free(&pkt);
-  avcodec_free_context(&dec);
-  avformat_close_input(&fmt);
-  return out;
-}
-
 // Per-channel mean and max absolute difference over "flat" pixels: those whose 7x7
 // neighbourhood in the input has one colour (edges blur under 4:2:0 chroma and DCT).
 struct Fidelity {
@@ -171,31 +102,6 @@ Fidelity compare_flat(const Image& input, const Image& decoded) {
     }
   for (double& m : f.mean) m /= static_cast<double>(n);
   return f;
-}
-
-std::string read_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-// The top-level MP4 boxes in file order.
-std::vector<std::string> top_level_boxes(const std::string& bytes) {
-  std::vector<std::string> boxes;
-  std::size_t at = 0;
-  auto be32 = [&](std::size_t i) {
-    return std::uint64_t(std::uint8_t(bytes[i])) << 24 |
-           std::uint64_t(std::uint8_t(bytes[i + 1])) << 16 |
-           std::uint64_t(std::uint8_t(bytes[i + 2])) << 8 |
-           std::uint64_t(std::uint8_t(bytes[i + 3]));
-  };
-  while (at + 8 <= bytes.size()) {
-    std::uint64_t size = be32(at);
-    boxes.push_back(bytes.substr(at + 4, 4));
-    if (size == 1) size = be32(at + 8) << 32 | be32(at + 12);  // 64-bit size
-    if (size == 0) break;                                      // to the end of the file
-    at += size;
-  }
-  return boxes;
 }
 
 }  // namespace

@@ -60,6 +60,8 @@ struct RenderOptions {
   int threads = 1;
   bool quiet = false;
   FrameOptions frame;
+  bool no_overlay = false;  // --no-overlay
+  std::string overlay;      // --overlay hud,plots,spacetime,modes; empty: the scene's [render]
 };
 int render_command(const RenderOptions& options);
 

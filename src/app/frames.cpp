@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "overlay/overlay_history.h"
+#include "physics/energy.h"
 #include "physics/integrator.h"
 
 namespace cb {
@@ -53,7 +55,25 @@ RenderDesc frame_settings(const SceneDesc& scene, const FrameOptions& o) {
   return d;
 }
 
-RunExtent measure_run(const SceneDesc& scene, double tau_stop, double dt) {
+namespace {
+
+// The overlay's extremes at one sample: phi of the plotted springs and the energy.
+void sample_overlay(const ChainState& state, const ChainParams& params, RunExtent& e) {
+  int springs[kPlottedSprings];
+  const int count = plotted_springs(params.beads, springs);
+  for (int s = 0; s < count; ++s) {
+    if (!spring_intact(state, springs[s])) continue;
+    const double phi = extension(state, springs[s]);
+    e.phi_min = std::min(e.phi_min, phi);
+    e.phi_max = std::max(e.phi_max, phi);
+  }
+  e.energy_max = std::max(e.energy_max, per_particle(energy(state).total(), params.beads));
+}
+
+}  // namespace
+
+RunExtent measure_run(const SceneDesc& scene, double tau_stop, double dt,
+                      std::int64_t sample_every) {
   Integrator sim(scene.chain, make_forcing(scene.drive), {dt, 1});
   RunExtent e;
   e.tau_stop = tau_stop;
@@ -62,6 +82,8 @@ RunExtent measure_run(const SceneDesc& scene, double tau_stop, double dt) {
   bool broken = false;
   while (sim.state().step < last) {
     if (!sim.step()) throw std::runtime_error(sim.error());
+    if (sample_every > 0 && sim.state().breaks.empty() && sim.state().step % sample_every == 0)
+      sample_overlay(sim.state(), scene.chain, e);
     if (!broken) {
       const auto& x = sim.state().psi;
       for (std::size_t i = 0; i < x.size(); ++i) {

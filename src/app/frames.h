@@ -2,6 +2,7 @@
 // that fit the chain in the frame), and the GL context + renderer they draw with.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -28,13 +29,19 @@ RenderDesc frame_settings(const SceneDesc& scene, const FrameOptions& options);
 // first) and returns the layout that keeps the chain in the frame for the whole run: psi
 // and force ranges up to the first break (the detached part may then leave the frame).
 // Also reports where the run stops.
+// With `sample_every` > 0 it also samples, every that many steps (a video's frames) up to the
+// first break, what the overlay's plot axes need: the extremes of phi_1, phi_N/2, phi_N and
+// of the energy per particle. (After a break a detached end flies off: scaling the axes to
+// it would flatten the part the plots are about, so those curves may leave the plot.)
 struct RunExtent {
   double psi_range = 1.0;
   double force_range = 1.0;
   double strain_range = 1.0;  // the largest |phi| (colour scale of an unbreakable chain)
   double tau_stop = 0.0;
+  double phi_min = 0.0, phi_max = 0.0, energy_max = 0.0;  // sampled (see above)
 };
-RunExtent measure_run(const SceneDesc& scene, double tau_stop, double dt);
+RunExtent measure_run(const SceneDesc& scene, double tau_stop, double dt,
+                      std::int64_t sample_every = 0);
 
 SnapshotStyle snapshot_style(const SceneDesc& scene, const RenderDesc& frame,
                              const RunExtent& extent);

@@ -4,7 +4,9 @@
 // frame's snapshot; this thread draws it with GL and reads the pixels back; the sink
 // converts and encodes (VideoEncoder) or compresses PNGs (PngSequence) on its own threads.
 // Bounded queues between them keep memory flat, so the slowest stage, normally the
-// encoder, sets the pace.
+// encoder, sets the pace. The overlay follows the same split: the producer records its
+// histories (OverlayHistory) and hands each snapshot an immutable OverlayData; this thread
+// draws it with ImGui over the renderer's frame, before the pixels are read back.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -17,6 +19,8 @@
 #include "app/render_plan.h"
 #include "output/frame_writer.h"
 #include "output/video_encoder.h"
+#include "overlay/overlay.h"
+#include "overlay/overlay_history.h"
 #include "physics/integrator.h"
 
 namespace cb {
@@ -30,6 +34,7 @@ struct Producer {
   const RenderPlan& plan;
   int threads;
   BoundedQueue<RenderSnapshot>& queue;
+  OverlayHistory* history;  // null: no overlay
   std::string error;
   std::vector<BreakEvent> breaks;
 
@@ -40,7 +45,12 @@ struct Producer {
         error = sim.error();
         break;
       }
-      if (!queue.push(build_snapshot(sim.state(), scene.chain, sim.force_now(), plan.style))) break;
+      RenderSnapshot snap = build_snapshot(sim.state(), scene.chain, sim.force_now(), plan.style);
+      if (history) {
+        history->record(k, sim.state(), sim.force_now());
+        snap.overlay = history->share();
+      }
+      if (!queue.push(std::move(snap))) break;
     }
     breaks = sim.state().breaks;
     queue.close();
@@ -72,19 +82,35 @@ int render_command(const RenderOptions& o) {
   }
   Canvas canvas = make_canvas(o.frame, plan.frame.width, plan.frame.height);
   const std::string gl = describe(*canvas.context);
-  if (!o.quiet)
+  // Made here, before any frame: a missing font stops the run with nothing written.
+  std::unique_ptr<Overlay> overlay;
+  std::unique_ptr<OverlayHistory> history;
+  if (plan.overlay_layout.enabled) {
+    overlay = std::make_unique<Overlay>(plan.frame.width, plan.frame.height, plan.frame.fps,
+                                        plan.overlay);
+    history = std::make_unique<OverlayHistory>(scene.chain, scene.drive, plan.overlay_setup);
+  }
+  if (!o.quiet) {
     std::fprintf(stderr, "render %s: %lld frames %dx%d at %g fps (%g tau/s, dt %g) -> %s\n",
                  scene.name.c_str(), static_cast<long long>(plan.frames), plan.frame.width,
                  plan.frame.height, plan.frame.fps, plan.frame.speed, plan.dt, plan.output.c_str());
+    if (plan.overlay.any() && !plan.overlay_layout.enabled)
+      std::fprintf(stderr, "render %s: no overlay below %dx%d (its text would not be readable)\n",
+                   scene.name.c_str(), kOverlayMinWidth, kOverlayMinHeight);
+  }
 
   BoundedQueue<RenderSnapshot> snapshots(3);
-  Producer producer{scene, plan, o.threads, snapshots, {}, {}};
+  Producer producer{scene, plan, o.threads, snapshots, history.get(), {}, {}};
   std::thread physics(std::ref(producer));
   Progress progress("render " + scene.name, static_cast<double>(plan.frames), o.quiet, "frames");
   std::int64_t done = 0;
   try {
     while (auto snap = snapshots.pop()) {
-      sink->push(canvas.renderer->render(*snap));
+      canvas.renderer->draw(*snap);  // leaves its framebuffer bound for the overlay
+      if (overlay) overlay->draw(*snap);
+      Image image;
+      canvas.renderer->read(image);
+      sink->push(std::move(image));
       progress.update(static_cast<double>(++done));
     }
   } catch (...) {

@@ -60,6 +60,21 @@ std::string drive_json(const DriveDesc& d) {
   return j + "}";
 }
 
+// The scene's [render] overlay switches, then the command line's.
+OverlaySwitches overlay_switches(const RenderDesc& r, const RenderOptions& o) {
+  OverlaySwitches s{r.overlay_hud, r.overlay_plots, r.overlay_spacetime, r.overlay_modes};
+  if (!r.overlay) s = OverlaySwitches{false, false, false, false};
+  if (!o.overlay.empty()) {
+    std::string bad;
+    if (!parse_overlay_switches(o.overlay, s, bad))
+      throw SceneError("--overlay " + o.overlay + ": unknown part '" + bad +
+                       "'; expected a comma-separated list of hud, plots, spacetime, modes " +
+                       "(or all, none), e.g. --overlay hud,plots");
+  }
+  if (o.no_overlay) s = OverlaySwitches{false, false, false, false};
+  return s;
+}
+
 }  // namespace
 
 RenderPlan plan_render(const SceneDesc& scene, const RenderOptions& o) {
@@ -84,9 +99,25 @@ RenderPlan plan_render(const SceneDesc& scene, const RenderOptions& o) {
   p.substeps = std::max<std::int64_t>(
       1, static_cast<std::int64_t>(std::ceil(p.tau_per_frame / scene.integrator.dt - 1e-9)));
   p.dt = p.tau_per_frame / static_cast<double>(p.substeps);
-  p.extent = measure_run(scene, scene.integrator.t_end, p.dt);
+  p.overlay = overlay_switches(p.frame, o);
+  p.overlay_layout = overlay_layout(p.frame.width, p.frame.height, p.overlay);
+  // With the overlay the pre-pass also samples, at the frame times, the plots' extremes.
+  p.extent = measure_run(scene, scene.integrator.t_end, p.dt,
+                         p.overlay_layout.enabled ? p.substeps : 0);
   p.frames = static_cast<std::int64_t>(std::floor(p.extent.tau_stop / p.tau_per_frame + 1e-9)) + 1;
   p.style = snapshot_style(scene, p.frame, p.extent);
+  if (p.overlay_layout.enabled) {
+    p.style.chain_height = p.overlay_layout.chain_height;  // the plots take the rest
+    OverlaySetup& s = p.overlay_setup;
+    s.title = scene.title;
+    s.omega0 = scene.units ? scene.units->omega0() : 0.0;
+    s.tau_per_frame = p.tau_per_frame;
+    s.tau_end = static_cast<double>(p.frames - 1) * p.tau_per_frame;
+    s.phi_min = p.extent.phi_min;
+    s.phi_max = p.extent.phi_max;
+    s.energy_max = p.extent.energy_max;
+    s.strain_scale = p.style.threshold > 0 ? p.style.threshold : p.style.strain_range;
+  }
   p.scene_hash = scene_hash(scene, o.overrides);
   return p;
 }
@@ -112,6 +143,8 @@ std::string plan_json(const SceneDesc& scene, const RenderPlan& p, const std::st
   j += ",\"width\":" + std::to_string(p.frame.width) +
        ",\"height\":" + std::to_string(p.frame.height);
   j += ",\"view\":" + json_string(p.frame.view);
+  j += ",\"overlay\":" +
+       json_string(p.overlay_layout.enabled ? overlay_switches_text(p.overlay) : "none");
   j += ",\"frames\":" + std::to_string(p.frames) + ",\"fps\":" + number_text(p.frame.fps);
   j += ",\"duration\":" + number_text(static_cast<double>(p.frames) / p.frame.fps);
   j += ",\"tau_per_second\":" + number_text(p.frame.speed) +

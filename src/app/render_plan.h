@@ -8,6 +8,8 @@
 
 #include "app/commands.h"
 #include "app/frames.h"
+#include "overlay/overlay_history.h"
+#include "overlay/overlay_layout.h"
 
 namespace cb {
 
@@ -19,6 +21,12 @@ struct RenderPlan {
   std::int64_t frames = 0;     // frame k shows tau = k * tau_per_frame
   RunExtent extent;            // what keeps the chain in the frame; where the run stops
   SnapshotStyle style;
+  // The overlay: the parts asked for (scene [render], then --overlay / --no-overlay), where
+  // they go (disabled when none is on or the frame is under 640x360) and what the physics
+  // side needs to fill them.
+  OverlaySwitches overlay;
+  OverlayLayout overlay_layout;
+  OverlaySetup overlay_setup;
   std::string output;      // the video path, or the PNG folder
   std::string codec;       // "h264", "vp9", "gif" or "png"
   std::string scene_hash;  // of the scene file and the overrides

@@ -120,6 +120,7 @@ struct Renderer::Impl {
   std::vector<DiscInstance> disc_data;
   std::vector<TriangleVertex> triangle_data;
   std::vector<Rect> text_rects;
+  std::vector<std::uint8_t> row;  // for flipping rows on readback
 
   Impl(int w, int h) : width(w), height(h) {
     if (w <= 0 || h <= 0 || w > 16384 || h > 16384)
@@ -137,6 +138,7 @@ struct Renderer::Impl {
     quad_program = build_program("quad");
     disc_program = build_program("disc");
     triangle_program = build_program("triangle");
+    for (GLuint p : {quad_program, disc_program, triangle_program}) set_viewport_uniform(p);
 
     const float quad_corners[] = {0, -1, 1, -1, 0, 1, 1, 1};  // triangle strip
     quads.create(quad_corners, 4);
@@ -177,11 +179,13 @@ struct Renderer::Impl {
     glDeleteFramebuffers(1, &fbo);
   }
 
-  void use(GLuint program) {
+  // Every program has one uniform, the viewport size, which never changes: set it once.
+  void set_viewport_uniform(GLuint program) {
     glUseProgram(program);
     glUniform2f(glGetUniformLocation(program, "u_viewport"), static_cast<float>(width),
                 static_cast<float>(height));
   }
+  void use(GLuint program) { glUseProgram(program); }
 
   template <class T>
   static void upload(GLuint buffer, const std::vector<T>& data) {
@@ -274,13 +278,13 @@ void Renderer::read(Image& out) {
   glReadPixels(0, 0, im.width, im.height, GL_RGBA, GL_UNSIGNED_BYTE, out.rgba.data());
   // GL's rows run bottom-up; images here run top-down.
   const std::size_t row = static_cast<std::size_t>(im.width) * 4;
-  std::vector<std::uint8_t> tmp(row);
+  im.row.resize(row);
   for (int y = 0; y < im.height / 2; ++y) {
     std::uint8_t* a = &out.rgba[y * row];
     std::uint8_t* b = &out.rgba[(im.height - 1 - y) * row];
-    std::memcpy(tmp.data(), a, row);
+    std::memcpy(im.row.data(), a, row);
     std::memcpy(a, b, row);
-    std::memcpy(b, tmp.data(), row);
+    std::memcpy(b, im.row.data(), row);
   }
 }
 

@@ -20,9 +20,9 @@ void label_rects(const Label& label, std::vector<Rect>& out) {
   if (label.text.empty()) return;
   static thread_local std::vector<EasyVertex> buffer;
   buffer.resize(label.text.size() * 80 + 64);  // stb's guidance: ~270 bytes per character
-  const int quads =
-      stb_easy_font_print(0.0f, 0.0f, const_cast<char*>(label.text.c_str()), nullptr, buffer.data(),
-                          static_cast<int>(buffer.size() * sizeof(EasyVertex)));
+  std::string text = printable_ascii(label.text);
+  const int quads = stb_easy_font_print(0.0f, 0.0f, text.data(), nullptr, buffer.data(),
+                                        static_cast<int>(buffer.size() * sizeof(EasyVertex)));
   const float scale = label.size / kCapHeight;
   for (int q = 0; q < quads; ++q) {
     const EasyVertex* v = &buffer[q * 4];
@@ -38,7 +38,7 @@ void label_rects(const Label& label, std::vector<Rect>& out) {
 }
 
 float label_width(const std::string& text, float size) {
-  return stb_easy_font_width(const_cast<char*>(text.c_str())) * size / kCapHeight;
+  return text_width(text, size);
 }
 
 }  // namespace cb

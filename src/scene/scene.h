@@ -39,7 +39,10 @@ struct RenderDesc {
   double fps = 30.0;               // frames per second of video
   double speed = 10.0;             // tau per second of video
   std::string view = "longitudinal";  // longitudinal | transverse | both
-  bool overlay = true;             // HUD and plots (a later issue)
+  bool overlay = true;  // videos: the HUD and plots under the chain (src/overlay)
+  // Which parts of the overlay: the HUD; phi_1, phi_N/2, phi_N and energy vs tau; the
+  // space-time picture of the strain; the normal-mode bars.
+  bool overlay_hud = true, overlay_plots = true, overlay_spacetime = true, overlay_modes = true;
 };
 
 struct SceneDesc {

@@ -50,6 +50,10 @@ constexpr KeySpec kSchema[] = {
     {"render", "speed", Kind::Number, "speed = 10.0"},
     {"render", "view", Kind::String, "view = \"longitudinal\""},
     {"render", "overlay", Kind::Bool, "overlay = true"},
+    {"render", "overlay_hud", Kind::Bool, "overlay_hud = true"},
+    {"render", "overlay_plots", Kind::Bool, "overlay_plots = true"},
+    {"render", "overlay_spacetime", Kind::Bool, "overlay_spacetime = true"},
+    {"render", "overlay_modes", Kind::Bool, "overlay_modes = true"},
 };
 
 bool is_section(std::string_view name) {

@@ -1,4 +1,4 @@
-// [render]: frame size, frame rate, simulation speed and view of the scene's videos.
+// [render]: frame size, frame rate, simulation speed, view and overlay of the scene's videos.
 #include "scene/scene_sections.h"
 
 namespace cb::scene_detail {
@@ -41,6 +41,10 @@ RenderDesc read_render(const SceneReader& r) {
            "unknown render.view '" + d.view + "'; " +
                suggest(d.view, {"longitudinal", "transverse", "both"}, "\"", "\""));
   d.overlay = r.boolean("render", "overlay").value_or(d.overlay);
+  d.overlay_hud = r.boolean("render", "overlay_hud").value_or(d.overlay_hud);
+  d.overlay_plots = r.boolean("render", "overlay_plots").value_or(d.overlay_plots);
+  d.overlay_spacetime = r.boolean("render", "overlay_spacetime").value_or(d.overlay_spacetime);
+  d.overlay_modes = r.boolean("render", "overlay_modes").value_or(d.overlay_modes);
   return d;
 }
 

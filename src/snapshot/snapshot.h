@@ -4,12 +4,15 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "physics/chain.h"
 
 namespace cb {
+
+struct OverlayData;  // overlay/overlay_data.h: what the HUD and plots show (plain data)
 
 enum class View { Longitudinal, Transverse, Both };
 bool parse_view(const std::string& text, View& out);
@@ -48,6 +51,13 @@ struct Rect {  // filled axis-aligned rectangle (wall, colour bar cells, flash, 
   float x = 0, y = 0, w = 0, h = 0;
   Color color;
 };
+
+// Labels are drawn with a small built-in ASCII font: `text` with every byte outside
+// printable ASCII (32..126, and newline) replaced by '?' (UTF-8 "tau" would otherwise index
+// the font's glyph table out of bounds).
+std::string printable_ascii(const std::string& text);
+// Width in pixels of `text` at cap height `size`, exactly as the renderer draws it.
+float text_width(const std::string& text, float size);
 
 struct Label {
   std::string text;
@@ -120,6 +130,9 @@ struct RenderSnapshot {
   double arrow_length = 0.0;  // force arrow, tail to tip, pixels (< 0 points left; 0: none)
   SnapshotLayout layout;
   std::vector<Layer> layers;  // kLayerCount layers, in SnapshotLayer order
+  // The HUD and plots drawn over the frame by the overlay (src/overlay), filled on the physics
+  // side; null: no overlay. Shared and immutable, so the GL thread reads it without copying.
+  std::shared_ptr<const OverlayData> overlay;
 };
 
 // How a frame is laid out; the same for every frame of a video so nothing jumps.
@@ -133,6 +146,10 @@ struct SnapshotStyle {
   double force_range = 1.0;   // the largest |f| expected (arrow length)
   double threshold = 0.0;     // phi_c for the colour scale; <= 0: scale by strain_range
   double strain_range = 1.0;  // |phi| that maps to the end of the colour scale when unbreakable
+  // The chain, its colour bar and the time label keep to the top `chain_height` pixels of the
+  // frame, leaving the rest to the overlay's plots; 0 (or the frame's height): the whole frame.
+  // Text size and margins still follow the whole frame, so they match the overlay's.
+  int chain_height = 0;
 };
 
 // The strain colour map: s = phi / phi_c in [-1, 1] (clamped). Diverging (compression blue,

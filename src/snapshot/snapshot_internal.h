@@ -51,8 +51,6 @@ struct Frame {
   double break_age(int spring) const;
 };
 
-// Width in pixels of `text` at cap height `size` with the renderer's font (stb_easy_font).
-float text_width(const std::string& text, float size);
 
 // Appends beads, springs (or the strain ribbon), broken halves, break flashes and markers and
 // the force arrow of one panel.

@@ -13,12 +13,21 @@
 #pragma GCC diagnostic pop
 #endif
 
-namespace cb::snapshot_detail {
+namespace cb {
+
+std::string printable_ascii(const std::string& text) {
+  std::string out = text;
+  for (char& c : out) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c != '\n' && (u < 32 || u > 126)) c = '?';
+  }
+  return out;
+}
 
 float text_width(const std::string& text, float size) {
   constexpr float kCapHeight = 7.0f;  // stb_easy_font's glyphs, cap to baseline
-  std::string copy = text;            // stb takes a non-const char*
-  return static_cast<float>(stb_easy_font_width(copy.data())) * size / kCapHeight;
+  std::string safe = printable_ascii(text);  // also the non-const char* stb takes
+  return static_cast<float>(stb_easy_font_width(safe.data())) * size / kCapHeight;
 }
 
-}  // namespace cb::snapshot_detail
+}  // namespace cb
