@@ -23,6 +23,11 @@ void append(void* context, void* data, int size) {
 }  // namespace
 
 void write_png(const std::string& path, const Image& image) {
+  // stb's adaptive per-row filter choice dominates the encoding time (137-228 ms a 1080p
+  // frame, tests/bench/README.md); the plain "none" filter takes 54-85 ms for ~14 % more
+  // bytes, and frame sequences are written by the hundred.
+  static const bool filter_set = (stbi_write_force_png_filter = 0, true);  // once, thread-safe
+  (void)filter_set;
   // Encode in memory first: the file appears only once the whole PNG exists.
   std::string bytes;
   if (!stbi_write_png_to_func(append, &bytes, image.width, image.height, 4, image.rgba.data(),
