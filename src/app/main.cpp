@@ -118,9 +118,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 256));
   render_cmd->add_option("--set", sets, "Override a scene key (repeatable)");
   render_cmd->add_flag("--quiet", render.quiet, "No progress output");
-  auto* no_overlay =
-      render_cmd->add_flag("--no-overlay", render.no_overlay,
-                           "No HUD or plots: the chain alone, over the whole frame");
+  auto* no_overlay = render_cmd->add_flag("--no-overlay", render.no_overlay,
+                                          "No HUD or plots: the chain alone, over the whole frame");
   render_cmd
       ->add_option("--overlay", render.overlay,
                    "Overlay parts to draw: hud,plots,spacetime,modes (any subset), all or none")

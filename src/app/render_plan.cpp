@@ -102,8 +102,8 @@ RenderPlan plan_render(const SceneDesc& scene, const RenderOptions& o) {
   p.overlay = overlay_switches(p.frame, o);
   p.overlay_layout = overlay_layout(p.frame.width, p.frame.height, p.overlay);
   // With the overlay the pre-pass also samples, at the frame times, the plots' extremes.
-  p.extent = measure_run(scene, scene.integrator.t_end, p.dt,
-                         p.overlay_layout.enabled ? p.substeps : 0);
+  p.extent =
+      measure_run(scene, scene.integrator.t_end, p.dt, p.overlay_layout.enabled ? p.substeps : 0);
   p.frames = static_cast<std::int64_t>(std::floor(p.extent.tau_stop / p.tau_per_frame + 1e-9)) + 1;
   p.style = snapshot_style(scene, p.frame, p.extent);
   if (p.overlay_layout.enabled) {

@@ -5,8 +5,9 @@
 // a fixed io.DisplaySize (the frame), a fixed io.DeltaTime (1 / fps), no ini file, no input;
 // only the OpenGL3 renderer backend, built on our GL loader. Everything is drawn through
 // ImDrawList (no windows, so no state carries from one frame to the next): the same snapshot
-// gives the same pixels whatever was drawn before it. One ImGui context per Overlay, made
-// current by each call, so overlays of different sizes may live side by side.
+// gives the same pixels whatever was drawn before it. The parts that only change with the
+// axes are drawn once into a texture and copied into each frame (overlay.cpp says why). One
+// ImGui context per Overlay, made current by each call, so overlays may live side by side.
 #pragma once
 
 #include <cstdint>

@@ -54,28 +54,28 @@ struct OverlayData {
   std::int64_t frame = 0;
   double tau = 0.0;
   double seconds = std::numeric_limits<double>::quiet_NaN();  // t = tau / omega0 with [units]
-  double force = 0.0;                                        // f(tau) on bead N
+  double force = 0.0;                                         // f(tau) on bead N
   // Eq. (energy): energy per particle (total / N^3) and its kinetic and potential parts.
   double energy = 0.0, kinetic = 0.0, potential = 0.0;
   std::vector<OverlayBreak> breaks;  // so far, in time order
 
   // ---- Fixed axes of the time plots ----
-  double tau_end = 1.0;                 // x: 0 .. tau_end (the video's last frame)
-  double tau_per_frame = 1.0;           // frame k shows tau = k * tau_per_frame
-  double phi_lo = -1.0, phi_hi = 1.0;   // y of the phi plot
-  double energy_hi = 1.0;               // y of the energy plot: 0 .. energy_hi
-  bool threshold_both_signs = false;    // break_on = "abs": -phi_c is a threshold too
+  double tau_end = 1.0;                      // x: 0 .. tau_end (the video's last frame)
+  double tau_per_frame = 1.0;                // frame k shows tau = k * tau_per_frame
+  double phi_lo = -1.0, phi_hi = 1.0;        // y of the phi plot
+  double energy_hi = 1.0;                    // y of the energy plot: 0 .. energy_hi
+  bool threshold_both_signs = false;         // break_on = "abs": -phi_c is a threshold too
   int springs[kPlottedSprings] = {1, 1, 1};  // which springs the phi plot shows
-  int spring_count = 0;                 // distinct ones (N < 3 has fewer)
+  int spring_count = 0;                      // distinct ones (N < 3 has fewer)
 
   // ---- Histories at frame times (decimated together; see the design note) ----
   int history_stride = 1;  // frames between kept samples
   std::vector<double> history_tau;
-  std::vector<double> phi[kPlottedSprings];  // RK4: phi_j at history_tau
+  std::vector<double> phi[kPlottedSprings];                            // RK4: phi_j at history_tau
   std::vector<double> energy_total, energy_kinetic, energy_potential;  // per particle
 
   // ---- Exact lines (ExactChain) for the same springs ----
-  bool exact = false;  // false: no exact lines (chain too long for the exact solver)
+  bool exact = false;             // false: no exact lines (chain too long for the exact solver)
   std::vector<double> exact_tau;  // frame times and kExactPerFrame - 1 points between
   std::vector<double> exact_phi[kPlottedSprings];
   // The exact solution is the unbroken chain's: the lines stop at the first break (the last

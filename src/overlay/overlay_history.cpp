@@ -59,7 +59,8 @@ OverlayHistory::OverlayHistory(const ChainParams& params, const DriveDesc& drive
   d.threshold_both_signs = params.breakable() && params.break_on == BreakMode::Abs;
   if (params.breakable()) {
     hi = std::max(hi, params.threshold);
-    if (d.threshold_both_signs && lo < -0.25 * params.threshold) lo = std::min(lo, -params.threshold);
+    if (d.threshold_both_signs && lo < -0.25 * params.threshold)
+      lo = std::min(lo, -params.threshold);
   }
   if (!(hi - lo > 0)) hi = lo + 1.0;
   const double pad = 0.06 * (hi - lo);
@@ -144,8 +145,7 @@ void OverlayHistory::record_exact(std::int64_t frame, double tau, const ChainSta
   const double t_break = first_break_tau(state);
   const int first = frame == 0 ? kExactPerFrame : 1;
   for (int i = first; i <= kExactPerFrame; ++i) {
-    const double t =
-        i == kExactPerFrame ? tau : last_tau_ + (tau - last_tau_) * i / kExactPerFrame;
+    const double t = i == kExactPerFrame ? tau : last_tau_ + (tau - last_tau_) * i / kExactPerFrame;
     if (t >= t_break) break;
     const std::int64_t g = frame * kExactPerFrame - (kExactPerFrame - i);
     if (g % exact_stride_ != 0) continue;

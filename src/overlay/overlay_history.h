@@ -66,9 +66,9 @@ class OverlayHistory {
   std::unique_ptr<ExactChain> exact_;
   std::int64_t next_frame_ = 0;
   double last_tau_ = 0.0;
-  int exact_stride_ = 1;           // exact samples (kExactPerFrame per frame) between kept ones
-  bool exact_done_ = false;        // the first break ended the exact lines
-  std::vector<double> x_, xdot_;   // scratch: modal amplitudes
+  int exact_stride_ = 1;          // exact samples (kExactPerFrame per frame) between kept ones
+  bool exact_done_ = false;       // the first break ended the exact lines
+  std::vector<double> x_, xdot_;  // scratch: modal amplitudes
 };
 
 }  // namespace cb

@@ -41,9 +41,7 @@ Box plot_area(const Box& panel, float font_px, int header = 1);
 struct PlotMapping {
   Box area;
   double x0 = 0, x1 = 1, y0 = 0, y1 = 1;
-  float px(double x) const {
-    return static_cast<float>(area.x + (x - x0) / (x1 - x0) * area.w);
-  }
+  float px(double x) const { return static_cast<float>(area.x + (x - x0) / (x1 - x0) * area.w); }
   float py(double y) const {
     return static_cast<float>(area.bottom() - (y - y0) / (y1 - y0) * area.h);
   }

@@ -4,6 +4,9 @@
 
 #include <imgui.h>
 
+#include <cstdint>
+#include <vector>
+
 #include "overlay/overlay.h"
 
 namespace cb::overlay_detail {
@@ -23,7 +26,14 @@ struct Marker {
   float size = 0;  // the quad's side, pixels (the disc's diameter plus its antialiased rim)
 };
 
+// The overlay is drawn in two passes. The still parts (panel outlines, titles, axes, grids,
+// tick labels, legends, the HUD's labels) change only with the axes: they are drawn once into
+// a texture and copied into every frame, a copy costing llvmpipe a fraction of drawing them.
+// The changing parts (curves, points, values, bars) are drawn over them every frame.
+enum class Pass { Static, Dynamic };
+
 struct Canvas {
+  Pass pass;
   ImDrawList* draw;
   Fonts fonts;
   Marker marker;
@@ -32,14 +42,22 @@ struct Canvas {
   float title_right = 0;  // where the current panel's title ends (notes keep clear of it)
 };
 
-// Each panel that is switched on. The panels have outlines, not filled backgrounds: filling
-// half the frame with blended quads is most of the overlay's cost on llvmpipe.
+// The panels, each in the canvas's pass. They have outlines, not filled backgrounds: on
+// llvmpipe a blended pixel costs ~10 ns, and the panels are half the frame.
 void draw_hud(Canvas& c);
 void draw_phi_plot(Canvas& c);
 void draw_energy_plot(Canvas& c);
-// `texture` holds the space-time rows bottom-up in its first `rows` of `texture_rows` rows.
-void draw_spacetime(Canvas& c, ImTextureID texture, int texture_rows);
+void draw_spacetime(Canvas& c);  // the axes and frame; the picture is compose_spacetime's
 void draw_modes(Canvas& c);
+
+// Whether two frames' still parts look the same (the axes, the title, the labels).
+bool same_still_parts(const OverlayData& a, const OverlayData& b);
+
+// The space-time picture at the plot area's size, one RGBA8 pixel per screen pixel, rows
+// bottom-up (GL's order), each pixel the cell under its centre; the background where there is
+// no row yet. Copied into the frame 1:1, the cheapest way llvmpipe has to put pixels there.
+void compose_spacetime(const OverlayLayout& layout, const OverlayData& d,
+                       std::vector<std::uint32_t>& pixels);
 
 // overlay_strain_rgb as an RGBA8 texel in memory order.
 std::uint32_t spacetime_texel(float s);

@@ -35,11 +35,11 @@ struct IntegratorDesc {
 
 // [render]: how frames and videos of the scene look. Validated here; the renderer reads it.
 struct RenderDesc {
-  int width = 1280, height = 720;  // pixels
-  double fps = 30.0;               // frames per second of video
-  double speed = 10.0;             // tau per second of video
+  int width = 1280, height = 720;     // pixels
+  double fps = 30.0;                  // frames per second of video
+  double speed = 10.0;                // tau per second of video
   std::string view = "longitudinal";  // longitudinal | transverse | both
-  bool overlay = true;  // videos: the HUD and plots under the chain (src/overlay)
+  bool overlay = true;                // videos: the HUD and plots under the chain (src/overlay)
   // Which parts of the overlay: the HUD; phi_1, phi_N/2, phi_N and energy vs tau; the
   // space-time picture of the strain; the normal-mode bars.
   bool overlay_hud = true, overlay_plots = true, overlay_spacetime = true, overlay_modes = true;

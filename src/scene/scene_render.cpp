@@ -11,11 +11,13 @@ int read_size(const SceneReader& r, std::string_view key, int fallback) {
   if (*v < 16 || *v > 16384)
     r.fail("render", key,
            "render." + std::string(key) + " must be between 16 and 16384 pixels, got " +
-               std::to_string(*v) + "; write e.g. " + std::string(find_key_spec("render", key)->example));
+               std::to_string(*v) + "; write e.g. " +
+               std::string(find_key_spec("render", key)->example));
   return static_cast<int>(*v);
 }
 
-double read_positive(const SceneReader& r, std::string_view key, double fallback, const char* unit) {
+double read_positive(const SceneReader& r, std::string_view key, double fallback,
+                     const char* unit) {
   const auto v = r.number("render", key);
   if (!v) return fallback;
   if (!(*v > 0.0))
@@ -33,7 +35,8 @@ RenderDesc read_render(const SceneReader& r) {
   d.height = read_size(r, "height", d.height);
   d.fps = read_positive(r, "fps", d.fps, "frames per second");
   if (d.fps > 240.0)
-    r.fail("render", "fps", "render.fps = " + format_exact(d.fps) + " is above 240; write e.g. fps = 60");
+    r.fail("render", "fps",
+           "render.fps = " + format_exact(d.fps) + " is above 240; write e.g. fps = 60");
   d.speed = read_positive(r, "speed", d.speed, "tau per second of video");
   d.view = r.string("render", "view").value_or(d.view);
   if (d.view != "longitudinal" && d.view != "transverse" && d.view != "both")

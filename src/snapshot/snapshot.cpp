@@ -169,7 +169,8 @@ SnapshotLayout snapshot_layout(const SnapshotStyle& style, const ChainParams& pa
   const double ts = 7.0 * std::max(1.0, std::round(frame_h / 360.0));
   const double margin = std::max(6.0, std::round(0.025 * std::min(W, frame_h)));
   // Below the chain's band the overlay draws: the legend and the panels stay above it.
-  const double H = style.chain_height > 0 ? std::min(frame_h, static_cast<double>(style.chain_height)) : frame_h;
+  const double H =
+      style.chain_height > 0 ? std::min(frame_h, static_cast<double>(style.chain_height)) : frame_h;
   l.text_size = static_cast<float>(ts);
   l.margin = static_cast<float>(margin);
   l.x_wall = static_cast<float>(margin + std::max(10.0, std::round(0.02 * W)));

@@ -1,0 +1,66 @@
+// Drawing primitives the overlay's panels share (overlay_plot.cpp). Internal to cb_overlay.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "overlay/overlay_panels.h"
+
+namespace cb::overlay_detail {
+
+// The theme, on the snapshot's dark background (overlay.h has the background and the series).
+constexpr OverlayRgb kText{224, 224, 230};
+constexpr OverlayRgb kDim{150, 153, 160};
+constexpr OverlayRgb kBorder{58, 60, 67};
+constexpr OverlayRgb kGrid{40, 42, 48};
+constexpr OverlayRgb kFrame{78, 80, 88};
+constexpr OverlayRgb kThreshold{213, 94, 0};  // Okabe-Ito vermillion
+constexpr OverlayRgb kCursor{110, 112, 120};
+constexpr OverlayRgb kTotal{236, 236, 240};
+constexpr OverlayRgb kKinetic{204, 121, 167};   // Okabe-Ito reddish purple
+constexpr OverlayRgb kPotential{240, 228, 66};  // Okabe-Ito yellow
+constexpr OverlayRgb kBar{86, 180, 233};
+constexpr OverlayRgb kBreak{255, 200, 90};  // the chain's break markers' amber
+
+ImU32 col(const OverlayRgb& c, float alpha = 1.0f);
+std::string format(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
+std::string subscript(int value);  // "15" -> "\u2081\u2085" (UTF-8 subscript digits)
+float text_width(ImFont* font, float size, const std::string& s);
+// Text with its top-left at (x, y); `align` 0 left, 0.5 centre, 1 right of x; `scale` of the
+// font size. Returns the x just right of the text.
+float text(Canvas& c, ImFont* font, float x, float y, const OverlayRgb& colour,
+           const std::string& s, float align = 0.0f, float scale = 1.0f);
+// Like text(), but "_x" draws the character x as a subscript (phi_c).
+float text_sub(Canvas& c, ImFont* font, float x, float y, const OverlayRgb& colour,
+               const std::string& s, float align = 0.0f, float scale = 1.0f);
+
+// Ticks at 1, 2 or 5 times a power of ten, at most about `count` of them in [lo, hi].
+struct Ticks {
+  std::vector<double> values;
+  double step = 1.0;
+};
+Ticks nice_ticks(double lo, double hi, int count);
+
+void dashed_hline(Canvas& c, float x0, float x1, float y, ImU32 colour, float width, float dash);
+void dashed_vline(Canvas& c, float x, float y0, float y1, ImU32 colour, float width, float dash);
+// A panel's outline and title (c.title_right: where the title ends).
+void panel(Canvas& c, const Box& box, const std::string& title);
+// A small note right-aligned in the title row; false (nothing drawn) when it would touch the
+// title.
+bool title_note(Canvas& c, const Box& box, const std::string& note);
+// Grid (optional), frame and tick labels of a plot in `box`; `x_name` below the y labels.
+void axes(Canvas& c, const Box& box, const PlotMapping& m, const Ticks& xt, const Ticks& yt,
+          const std::string& x_name, bool grid);
+struct LegendEntry {
+  OverlayRgb colour;
+  std::string label;
+  bool dot;  // a dot (points) rather than a dash (a line)
+};
+// A row of legend entries inside the plot's top-left corner, on a translucent box.
+void legend(Canvas& c, const Box& a, float y, const std::vector<LegendEntry>& entries);
+// A polyline through (t[i], v[i]), thinned (overlay_plot.cpp says how and why).
+void polyline(Canvas& c, const PlotMapping& m, const std::vector<double>& t,
+              const std::vector<double>& v, ImU32 colour, float width);
+void time_cursor(Canvas& c, const PlotMapping& m);  // a faint vertical line at the frame's tau
+
+}  // namespace cb::overlay_detail
