@@ -16,24 +16,9 @@
 #include "gl/context_backends.h"
 #include "gl/gl_context.h"
 #include "gl/gl_loader.h"
+#include "gl_test_support.h"
 
 namespace {
-
-bool gl_required() {
-  const char* value = std::getenv("CHAINBREAK_REQUIRE_GL");
-  return value != nullptr && std::string(value) == "1";
-}
-
-// The context, or null after a WARN when it cannot be made here (a FAIL if GL is required).
-std::unique_ptr<cb::GlContext> create_or_skip(cb::GlBackend backend) {
-  try {
-    return cb::create_gl_context(backend);
-  } catch (const cb::GlError& error) {
-    if (gl_required()) FAIL("CHAINBREAK_REQUIRE_GL=1 but: " << error.what());
-    WARN("skipped, no " << cb::gl_backend_name(backend) << " context: " << error.what());
-    return nullptr;
-  }
-}
 
 void check_core_33(const cb::GlContext& context) {
   INFO(cb::describe(context));
@@ -173,7 +158,7 @@ void check_pattern() {
 }  // namespace
 
 TEST_CASE("OSMesa gives a 3.3 core context that draws exact pixels", "[gl]") {
-  auto context = create_or_skip(cb::GlBackend::OSMesa);
+  auto context = cb::test::create_or_skip(cb::GlBackend::OSMesa);
   if (!context) return;
   CHECK(context->backend() == cb::GlBackend::OSMesa);
   CHECK(context->platform() == "osmesa");
@@ -183,7 +168,7 @@ TEST_CASE("OSMesa gives a 3.3 core context that draws exact pixels", "[gl]") {
 }
 
 TEST_CASE("EGL gives a 3.3 core context that draws exact pixels", "[gl]") {
-  auto context = create_or_skip(cb::GlBackend::Egl);
+  auto context = cb::test::create_or_skip(cb::GlBackend::Egl);
   if (!context) return;
   CHECK(context->backend() == cb::GlBackend::Egl);
   CHECK((context->platform() == "device" || context->platform() == "surfaceless"));
@@ -193,7 +178,7 @@ TEST_CASE("EGL gives a 3.3 core context that draws exact pixels", "[gl]") {
 }
 
 TEST_CASE("auto picks a working context", "[gl]") {
-  auto context = create_or_skip(cb::GlBackend::Auto);
+  auto context = cb::test::create_or_skip(cb::GlBackend::Auto);
   if (!context) return;
   INFO(cb::describe(*context));
   CHECK(context->backend() != cb::GlBackend::Auto);
@@ -205,7 +190,7 @@ TEST_CASE("contexts can be made one after another across backends", "[gl]") {
   // Each creation reloads the one global function table; a stale entry would draw nothing.
   for (cb::GlBackend backend :
        {cb::GlBackend::OSMesa, cb::GlBackend::Egl, cb::GlBackend::OSMesa, cb::GlBackend::Egl}) {
-    auto context = create_or_skip(backend);
+    auto context = cb::test::create_or_skip(backend);
     if (!context) continue;
     INFO(cb::describe(*context));
     check_pattern();

@@ -23,6 +23,7 @@
 
 #include "exact/exact_chain.h"
 #include "gl/gl_context.h"
+#include "gl_test_support.h"
 #include "output/png_writer.h"
 #include "overlay/modes.h"
 #include "overlay/overlay.h"
@@ -397,21 +398,6 @@ TEST_CASE(
 
 namespace {
 
-bool gl_required() {
-  const char* value = std::getenv("CHAINBREAK_REQUIRE_GL");
-  return value != nullptr && std::string(value) == "1";
-}
-
-std::unique_ptr<cb::GlContext> context_or_skip(cb::GlBackend backend) {
-  try {
-    return cb::create_gl_context(backend);
-  } catch (const cb::GlError& error) {
-    if (gl_required()) FAIL("CHAINBREAK_REQUIRE_GL=1 but: " << error.what());
-    WARN("skipped, no " << cb::gl_backend_name(backend) << " context: " << error.what());
-    return nullptr;
-  }
-}
-
 // A frame of the default scene's chain (N = 30, ramp 0.02, phi_c = 3) at frame `k` of a
 // 0.5-tau-per-frame video, its overlay recorded over frames 0..k.
 struct Video {
@@ -477,7 +463,7 @@ TEST_CASE("Overlay GL: the same frame twice is byte-identical, whatever came bet
           "[overlay]") {
   const cb::GlBackend backend = GENERATE(cb::GlBackend::OSMesa, cb::GlBackend::Egl);
   INFO("backend " << cb::gl_backend_name(backend));
-  auto context = context_or_skip(backend);
+  auto context = cb::test::create_or_skip(backend);
   if (!context) return;
   const Video video(1280, 720);
   const auto frames = video.frames(320);  // to tau = 159.5: past the first break (~150)
@@ -496,7 +482,7 @@ TEST_CASE("Overlay GL: the same frame twice is byte-identical, whatever came bet
 TEST_CASE("Overlay GL: switched off, the renderer's pixels are untouched", "[overlay]") {
   const cb::GlBackend backend = GENERATE(cb::GlBackend::OSMesa, cb::GlBackend::Egl);
   INFO("backend " << cb::gl_backend_name(backend));
-  auto context = context_or_skip(backend);
+  auto context = cb::test::create_or_skip(backend);
   if (!context) return;
   const Video video(1280, 720);
   const auto frames = video.frames(40);
@@ -523,7 +509,7 @@ TEST_CASE("Overlay GL: switched off, the renderer's pixels are untouched", "[ove
 TEST_CASE("Overlay GL: plotted data land on the pixels the plot's mapping gives", "[overlay]") {
   const cb::GlBackend backend = GENERATE(cb::GlBackend::OSMesa, cb::GlBackend::Egl);
   INFO("backend " << cb::gl_backend_name(backend));
-  auto context = context_or_skip(backend);
+  auto context = cb::test::create_or_skip(backend);
   if (!context) return;
   constexpr int kW = 1280, kH = 720;
   const cb::OverlaySwitches all;
@@ -606,7 +592,7 @@ TEST_CASE("Overlay GL: plotted data land on the pixels the plot's mapping gives"
 }
 
 TEST_CASE("Overlay: a missing font names the package to install", "[overlay]") {
-  auto context = context_or_skip(cb::GlBackend::Auto);
+  auto context = cb::test::create_or_skip(cb::GlBackend::Auto);
   if (!context) return;
   ::setenv("CHAINBREAK_FONT_DIR", "/nonexistent-chainbreak-fonts", 1);
   std::string message;
@@ -627,7 +613,7 @@ TEST_CASE("render --no-overlay draws the chain alone, exactly as without the ove
   // A frame of a render equals a snapshot at its tau (same state, same layout: see
   // test_render_cli.cpp); at 640x360 the overlay is on by default, so only --no-overlay
   // (or overlay = false) keeps that equality, pixel for pixel.
-  if (!context_or_skip(cb::GlBackend::Auto)) return;  // the child processes make their own
+  if (!cb::test::create_or_skip(cb::GlBackend::Auto)) return;  // the child processes make their own
   namespace fs = std::filesystem;
   const fs::path dir =
       fs::temp_directory_path() / ("chainbreak-overlay-" + std::to_string(::getpid()));
@@ -657,7 +643,7 @@ TEST_CASE("render --no-overlay draws the chain alone, exactly as without the ove
 // scene, with and without the overlay, and the producer's recording per frame. Not a check:
 // run by hand, `chainbreak_tests "[.overlay_cost]"`.
 TEST_CASE("Overlay cost at 1080p", "[.overlay_cost]") {
-  auto context = context_or_skip(cb::GlBackend::Auto);
+  auto context = cb::test::create_or_skip(cb::GlBackend::Auto);
   if (!context) return;
   const Video video(1920, 1080);
   using Clock = std::chrono::steady_clock;

@@ -21,6 +21,7 @@
 
 #include "drive/drive.h"
 #include "gl/gl_context.h"
+#include "gl_test_support.h"
 #include "output/image.h"
 #include "output/png_writer.h"
 #include "physics/integrator.h"
@@ -29,22 +30,6 @@
 #include "snapshot/snapshot.h"
 
 namespace {
-
-bool gl_required() {
-  const char* value = std::getenv("CHAINBREAK_REQUIRE_GL");
-  return value != nullptr && std::string(value) == "1";
-}
-
-// The context, or null after a WARN when it cannot be made here (a FAIL if GL is required).
-std::unique_ptr<cb::GlContext> create_or_skip(cb::GlBackend backend) {
-  try {
-    return cb::create_gl_context(backend);
-  } catch (const cb::GlError& error) {
-    if (gl_required()) FAIL("CHAINBREAK_REQUIRE_GL=1 but: " << error.what());
-    WARN("skipped, no " << cb::gl_backend_name(backend) << " context: " << error.what());
-    return nullptr;
-  }
-}
 
 // Colours k/255 convert to unorm8 exactly (round(c * 255) = k), so opaque unblended shapes
 // have exactly known pixels.
@@ -129,7 +114,7 @@ const cb::Label* find_label(const cb::RenderSnapshot& snap, const std::string& p
 TEST_CASE("Trivial shapes land on exactly their pixels", "[render]") {
   const cb::GlBackend backend = GENERATE(cb::GlBackend::OSMesa, cb::GlBackend::Egl);
   INFO("backend " << cb::gl_backend_name(backend));
-  auto context = create_or_skip(backend);
+  auto context = cb::test::create_or_skip(backend);
   if (!context) return;
   constexpr int kW = 128, kH = 96;
   const cb::Color bg = rgb255(20, 24, 28);
@@ -236,7 +221,7 @@ TEST_CASE("Trivial shapes land on exactly their pixels", "[render]") {
 TEST_CASE("A segment stops at its end points", "[render]") {
   const cb::GlBackend backend = GENERATE(cb::GlBackend::OSMesa, cb::GlBackend::Egl);
   INFO("backend " << cb::gl_backend_name(backend));
-  auto context = create_or_skip(backend);
+  auto context = cb::test::create_or_skip(backend);
   if (!context) return;
   constexpr int kW = 128, kH = 32;
   const cb::Color bg = rgb255(20, 24, 28);
@@ -256,7 +241,7 @@ TEST_CASE("A segment stops at its end points", "[render]") {
 TEST_CASE("A label draws its colour inside its box and nothing outside", "[render]") {
   const cb::GlBackend backend = GENERATE(cb::GlBackend::OSMesa, cb::GlBackend::Egl);
   INFO("backend " << cb::gl_backend_name(backend));
-  auto context = create_or_skip(backend);
+  auto context = cb::test::create_or_skip(backend);
   if (!context) return;
   constexpr int kW = 160, kH = 48;
   const cb::Color bg = rgb255(10, 10, 10);
@@ -295,7 +280,7 @@ TEST_CASE("A label draws its colour inside its box and nothing outside", "[rende
 TEST_CASE("A spring shows strain_color of its extension", "[render]") {
   const cb::GlBackend backend = GENERATE(cb::GlBackend::OSMesa, cb::GlBackend::Egl);
   INFO("backend " << cb::gl_backend_name(backend));
-  auto context = create_or_skip(backend);
+  auto context = cb::test::create_or_skip(backend);
   if (!context) return;
   cb::SnapshotStyle style;
   style.width = 640;
@@ -352,7 +337,7 @@ TEST_CASE("A spring shows strain_color of its extension", "[render]") {
 TEST_CASE("The break marker appears after the break and not before", "[render]") {
   const cb::GlBackend backend = GENERATE(cb::GlBackend::OSMesa, cb::GlBackend::Egl);
   INFO("backend " << cb::gl_backend_name(backend));
-  auto context = create_or_skip(backend);
+  auto context = cb::test::create_or_skip(backend);
   if (!context) return;
   const int n = 30;
   const auto params = chain(n, 1.0);
@@ -407,7 +392,7 @@ TEST_CASE("The break marker appears after the break and not before", "[render]")
 TEST_CASE("Rendering is deterministic, down to the PNG bytes", "[render]") {
   const cb::GlBackend backend = GENERATE(cb::GlBackend::OSMesa, cb::GlBackend::Egl);
   INFO("backend " << cb::gl_backend_name(backend));
-  auto context = create_or_skip(backend);
+  auto context = cb::test::create_or_skip(backend);
   if (!context) return;
   const auto snap = anomalous_frame(480, 270);
   cb::Image first, second, fresh;
@@ -445,7 +430,7 @@ TEST_CASE("OSMesa and EGL draw the same frame", "[render]") {
   std::optional<cb::Image> images[2];
   const cb::GlBackend backends[2] = {cb::GlBackend::OSMesa, cb::GlBackend::Egl};
   for (int i = 0; i < 2; ++i) {
-    auto context = create_or_skip(backends[i]);
+    auto context = cb::test::create_or_skip(backends[i]);
     if (!context) return;
     const auto snap = anomalous_frame(640, 360);
     cb::Renderer renderer(640, 360);
@@ -463,7 +448,7 @@ TEST_CASE("OSMesa and EGL draw the same frame", "[render]") {
 TEST_CASE("N = 1e6 renders a 1080p ribbon from an O(width) snapshot", "[render]") {
   const cb::GlBackend backend = GENERATE(cb::GlBackend::OSMesa, cb::GlBackend::Egl);
   INFO("backend " << cb::gl_backend_name(backend));
-  auto context = create_or_skip(backend);
+  auto context = cb::test::create_or_skip(backend);
   if (!context) return;
   const int n = 1000000;
   auto state = rest_state(n);
