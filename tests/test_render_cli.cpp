@@ -14,14 +14,13 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
 #include <vector>
 
-#include "gl/gl_context.h"
+#include "gl_test_support.h"
 #include "output/png_writer.h"
 #include "video_probe.h"
 
@@ -82,20 +81,10 @@ json read_json(const std::string& path) {
   return json::parse(cb::test::read_bytes(path));
 }
 
-// Whether the program can draw here: the same check test_render.cpp makes, in-process.
+// Whether the program can draw here: its default backend (auto) in this process, once (a
+// WARN and a skip where it cannot, a FAIL under ctest's CHAINBREAK_REQUIRE_GL=1).
 bool gl_available() {
-  static const bool available = [] {
-    try {
-      cb::create_gl_context(cb::GlBackend::Auto);
-      return true;
-    } catch (const cb::GlError& error) {
-      const char* required = std::getenv("CHAINBREAK_REQUIRE_GL");
-      if (required && std::string(required) == "1")
-        FAIL("CHAINBREAK_REQUIRE_GL=1 but: " << error.what());
-      WARN("render tests skipped, no OpenGL context: " << error.what());
-      return false;
-    }
-  }();
+  static const bool available = cb::test::create_or_skip(cb::GlBackend::Auto) != nullptr;
   return available;
 }
 

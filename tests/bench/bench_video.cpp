@@ -3,20 +3,24 @@
 // x264-alone frames/s. main() prints the medians and the ratios after the benchmarks.
 //
 // - Frames: the default scene (anomalous_breaking.toml, 1920x1080, 60 fps, 10 tau/s), its
-//   first kFrames frames (tau 0 .. 39.8), made once in memory before timing: the physics,
-//   the layout and the snapshots exactly as `render` makes them (render_plan.cpp: frame k at
-//   k x 17 steps of dt = (1/6)/17; frames.cpp: the layout from a pre-pass), drawn by
-//   cb::Renderer on the same GL backend (auto).
-// - BM_X264Alone/preset: those RGBA frames through swscale (RGBA -> yuv420p, BT.709 limited)
-//   and libx264, set up as cb::VideoEncoder does (crf 18, 2 threads, key frame every 2 s,
+//   first kFrames frames (tau 0 .. 39.8), made once before timing by the program itself
+//   (`chainbreak render --frames` into /dev/shm, read back): the very pictures `render`
+//   encodes, overlay and all, whatever it draws today.
+// - BM_Video/preset, one iteration = one pair, run back to back in alternating order so
+//   that both halves see the same machine (PLATFORM-NOTES.md: its speed drifts; other
+//   jobs may share it):
+//   x264 alone: those RGBA frames through swscale (RGBA -> yuv420p, BT.709 limited) and
+//   libx264, set up as cb::VideoEncoder does (crf 18, 2 threads, key frame every 2 s,
 //   bit-exact), packets dropped: no container, no file. Conversion and encoding run one
 //   after the other on one thread, as on the encoder's worker thread.
-// - BM_Render/preset: the `chainbreak render` process on the same clip (--set
-//   integrator.t_end=39.9 gives the same kFrames frames), writing to /dev/shm; wall time
-//   from spawn to exit, so process start, scene, pre-pass, GL context, physics, drawing,
-//   readback, conversion, encoding, muxing and fsync all count.
-// - BM_Draw, BM_Convert: drawing and reading back those frames alone (no encoder), and their
-//   conversion to yuv420p alone: where the time goes.
+//   render: the `chainbreak render` process on the same clip (--set integrator.t_end=39.9
+//   gives the same kFrames frames), writing to /dev/shm; wall time from spawn to exit, so
+//   process start, scene, pre-pass, GL context, physics, drawing, readback, conversion,
+//   encoding, muxing and fsync all count.
+//   Counters: frames/s of each, their ratio, busy cores of each (CPU time / wall time), and
+//   "others": cores busy with other processes meanwhile (/proc/stat minus ours), which
+//   flags a repetition measured on a shared machine.
+// - BM_Convert: the conversion to yuv420p alone, on one thread: where the time goes.
 #include <benchmark/benchmark.h>
 #include <fcntl.h>
 #include <spawn.h>
@@ -26,28 +30,21 @@
 
 extern "C" {
 #include <libavcodec/avcodec.h>
-#include <libavutil/opt.h>
 #include <libswscale/swscale.h>
 }
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include "drive/drive.h"
-#include "gl/gl_context.h"
-#include "physics/integrator.h"
-#include "render/renderer.h"
-#include "scene/scene.h"
-#include "snapshot/snapshot.h"
+#include "output/image.h"
+#include "output/png_writer.h"
 
 namespace {
 
@@ -67,69 +64,93 @@ double seconds_since(Clock::time_point t) {
 double cpu_seconds(const rusage& u) {
   return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
 }
-double process_cpu_seconds() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return cpu_seconds(u);
+// CPU seconds of this process and of its children that were waited for.
+double own_cpu_seconds() {
+  rusage self{}, children{};
+  getrusage(RUSAGE_SELF, &self);
+  getrusage(RUSAGE_CHILDREN, &children);
+  return cpu_seconds(self) + cpu_seconds(children);
 }
 
-// What every benchmark measured, by name, for the summary main() prints: frames/s, and
-// busy cores (CPU time / wall time).
-std::map<std::string, std::vector<double>> g_fps, g_cores;
+// CPU seconds the whole machine was busy (every process), from /proc/stat.
+double machine_cpu_seconds() {
+  std::ifstream in("/proc/stat");
+  std::string cpu;
+  double user = 0, nice = 0, system = 0, idle = 0, iowait = 0, irq = 0, softirq = 0, steal = 0;
+  in >> cpu >> user >> nice >> system >> idle >> iowait >> irq >> softirq >> steal;
+  return (user + nice + system + irq + softirq + steal) / static_cast<double>(sysconf(_SC_CLK_TCK));
+}
 
-struct Clip {
-  std::unique_ptr<cb::GlContext> context;
-  std::unique_ptr<cb::Renderer> renderer;
-  std::vector<cb::RenderSnapshot> snapshots;
-  std::vector<cb::Image> frames;
-  std::string error;  // why the clip could not be made
+// Wall time, our busy cores and other processes' busy cores over a stretch of work.
+struct Meter {
+  Clock::time_point start = Clock::now();
+  double own = own_cpu_seconds(), machine = machine_cpu_seconds();
+  double seconds() const { return seconds_since(start); }
+  double cores() const { return (own_cpu_seconds() - own) / seconds(); }
+  double others() const {
+    return std::max(0.0, (machine_cpu_seconds() - machine) - (own_cpu_seconds() - own)) / seconds();
+  }
 };
-Clip g_clip;
+
+// What every repetition measured, by name ("x264/veryfast", "convert/exact", ...), for the
+// summary main() prints.
+std::map<std::string, std::vector<double>> g_values;
+
+std::vector<cb::Image> g_frames;  // the clip, RGBA
+std::string g_clip_error;         // why there is no clip
 
 std::string scene_path() {
   return std::string(CHAINBREAK_SCENES) + "/anomalous_breaking.toml";
 }
 
-// The frames `render` makes for the default scene with integrator.t_end = kTauEnd.
-void make_clip() {
-  const cb::SceneDesc scene = cb::load_scene(
-      scene_path(), {cb::parse_override(std::string("integrator.t_end=") + kTauEnd)});
-  const cb::RenderDesc& r = scene.render;
-  // render_plan.cpp: the step shrunk so that a whole number of steps lands on every frame.
-  const double tau_per_frame = r.speed / r.fps;
-  const auto substeps =
-      static_cast<std::int64_t>(std::ceil(tau_per_frame / scene.integrator.dt - 1e-9));
-  const double dt = tau_per_frame / static_cast<double>(substeps);
-  // frames.cpp (measure_run): the layout's ranges from a pre-pass to t_end, no break here
-  // (the first one is at tau ~ 150).
-  double psi = 0.0, force = 0.0;
-  {
-    cb::Integrator pre(scene.chain, cb::make_forcing(scene.drive), {dt, 1});
-    const auto last = static_cast<std::int64_t>(std::llround(scene.integrator.t_end / dt));
-    while (pre.state().step < last) {
-      if (!pre.step()) throw std::runtime_error(pre.error());
-      for (double x : pre.state().psi) psi = std::max(psi, std::abs(x));
-      force = std::max(force, std::abs(pre.force_now()));
-    }
-  }
-  cb::SnapshotStyle style;
-  style.width = r.width;
-  style.height = r.height;
-  cb::parse_view(r.view, style.view);
-  style.psi_range = std::max(psi, 1e-6);
-  style.force_range = std::max(force, 1e-6);
-  style.threshold = scene.chain.threshold;
-  style.strain_range = scene.chain.threshold;
+// Runs `chainbreak ARGS` (stdout to /dev/null); returns the wall time, or < 0 if it failed.
+// posix_spawn, not fork: this process holds ~2 GB of frames, whose page tables a fork
+// would copy on the clock.
+double run_chainbreak(std::vector<std::string> args) {
+  args.insert(args.begin(), CHAINBREAK_EXE);
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);  // the path it prints
+  const auto start = Clock::now();
+  pid_t pid = 0;
+  const int err = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (err != 0) return -1;
+  int status = 0;  // waited for, so its CPU time counts in RUSAGE_CHILDREN (Meter)
+  if (::waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    return -1;
+  return seconds_since(start);
+}
 
-  g_clip.context = cb::create_gl_context(cb::GlBackend::Auto);
-  g_clip.renderer = std::make_unique<cb::Renderer>(r.width, r.height);
-  cb::Integrator sim(scene.chain, cb::make_forcing(scene.drive), {dt, 1});
-  for (int k = 0; k < kFrames; ++k) {
-    sim.advance_to(k * substeps);
-    g_clip.snapshots.push_back(
-        cb::build_snapshot(sim.state(), scene.chain, sim.force_now(), style));
-    g_clip.frames.push_back(g_clip.renderer->render(g_clip.snapshots.back()));
+const std::string kClipEnd = std::string("integrator.t_end=") + kTauEnd;
+
+// The frames `render` encodes for the default scene with integrator.t_end = kTauEnd.
+void make_clip() {
+  const fs::path dir = fs::path("/dev/shm") / ("bench_video-frames-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  if (run_chainbreak(
+          {"render", scene_path(), "--frames", dir.string(), "--set", kClipEnd, "--quiet"}) < 0) {
+    g_clip_error = "chainbreak render --frames failed (run it by hand to see why)";
+  } else {
+    for (int k = 0; k < kFrames && g_clip_error.empty(); ++k) {
+      char name[64];
+      std::snprintf(name, sizeof name, "anomalous_breaking_%06d.png", k);
+      try {
+        g_frames.push_back(cb::read_png((dir / name).string()));
+      } catch (const std::exception& e) {
+        g_clip_error = e.what();
+      }
+    }
+    if (fs::exists(dir / "anomalous_breaking_000240.png"))
+      g_clip_error = "chainbreak rendered more frames than the benchmark expects";
   }
+  fs::remove_all(dir);
+  if (g_clip_error.empty() && (g_frames[0].width != 1920 || g_frames[0].height != 1080))
+    g_clip_error = "the default scene no longer renders at 1920x1080";
+  if (!g_clip_error.empty()) g_frames.clear();
 }
 
 // ---- libx264 alone ------------------------------------------------------------------------
@@ -191,41 +212,26 @@ bool open_x264(X264& x, int w, int h, int fps, const char* preset) {
   return true;
 }
 
-void BM_X264Alone(benchmark::State& state) {
-  const char* preset = kPresets[state.range(0)];
-  state.SetLabel(preset);
-  if (g_clip.frames.empty()) return state.SkipWithError(g_clip.error.c_str());
-  const cb::Image& first = g_clip.frames.front();
-  double convert = 0.0, total = 0.0, cpu = 0.0;
-  for (auto _ : state) {
-    const double cpu_start = process_cpu_seconds();  // x264's threads included
-    const auto start = Clock::now();  // opening counts: the render process opens one too
-    X264 x;
-    if (!open_x264(x, first.width, first.height, 60, preset))
-      return state.SkipWithError("cannot open libx264");
-    for (int k = 0; k < kFrames; ++k) {
-      const cb::Image& image = g_clip.frames[k];
-      const auto t = Clock::now();
-      if (av_frame_make_writable(x.frame) < 0) return state.SkipWithError("out of memory");
-      const std::uint8_t* src[1] = {image.rgba.data()};
-      const int stride[1] = {image.width * 4};
-      sws_scale(x.sws, src, stride, 0, image.height, x.frame->data, x.frame->linesize);
-      convert += seconds_since(t);
-      x.frame->pts = k;
-      if (avcodec_send_frame(x.codec, x.frame) < 0 || !x.drain())
-        return state.SkipWithError("libx264 failed");
-    }
-    if (avcodec_send_frame(x.codec, nullptr) < 0 || !x.drain())  // flush the look-ahead
-      return state.SkipWithError("libx264 failed");
-    total = seconds_since(start);
-    cpu = process_cpu_seconds() - cpu_start;
-    state.SetIterationTime(total);
+// Encodes the clip; returns the wall time (opening included: the render process opens an
+// encoder too), or < 0 on an error. Adds the time spent converting to `convert`.
+double encode_alone(const char* preset, double& convert) {
+  const auto start = Clock::now();
+  const cb::Image& first = g_frames.front();
+  X264 x;
+  if (!open_x264(x, first.width, first.height, 60, preset)) return -1;
+  for (int k = 0; k < kFrames; ++k) {
+    const cb::Image& image = g_frames[k];
+    const auto t = Clock::now();
+    if (av_frame_make_writable(x.frame) < 0) return -1;
+    const std::uint8_t* src[1] = {image.rgba.data()};
+    const int stride[1] = {image.width * 4};
+    sws_scale(x.sws, src, stride, 0, image.height, x.frame->data, x.frame->linesize);
+    convert += seconds_since(t);
+    x.frame->pts = k;
+    if (avcodec_send_frame(x.codec, x.frame) < 0 || !x.drain()) return -1;
   }
-  state.counters["fps"] = kFrames / total;
-  state.counters["cores"] = cpu / total;  // busy cores on average (2 vCPUs here)
-  g_cores[std::string("x264/") + preset].push_back(cpu / total);
-  state.counters["convert_ms"] = 1e3 * convert / kFrames;  // per frame, of the above
-  g_fps[std::string("x264/") + preset].push_back(kFrames / total);
+  if (avcodec_send_frame(x.codec, nullptr) < 0 || !x.drain()) return -1;  // the look-ahead
+  return seconds_since(start);
 }
 
 // ---- conversion alone ------------------------------------------------------------------------
@@ -236,8 +242,8 @@ void BM_X264Alone(benchmark::State& state) {
 void BM_Convert(benchmark::State& state) {
   const bool exact = state.range(0) == 0;
   state.SetLabel(exact ? "accurate+bitexact" : "fast");
-  if (g_clip.frames.empty()) return state.SkipWithError(g_clip.error.c_str());
-  const int w = g_clip.frames.front().width, h = g_clip.frames.front().height;
+  if (g_frames.empty()) return state.SkipWithError(g_clip_error.c_str());
+  const int w = g_frames.front().width, h = g_frames.front().height;
   SwsContext* sws = sws_getContext(w, h, AV_PIX_FMT_RGBA, w, h, AV_PIX_FMT_YUV420P,
                                    SWS_BILINEAR | (exact ? SWS_ACCURATE_RND | SWS_BITEXACT : 0),
                                    nullptr, nullptr, nullptr);
@@ -251,7 +257,7 @@ void BM_Convert(benchmark::State& state) {
   double total = 0.0;
   for (auto _ : state) {
     const auto start = Clock::now();
-    for (const cb::Image& image : g_clip.frames) {
+    for (const cb::Image& image : g_frames) {
       const std::uint8_t* src[1] = {image.rgba.data()};
       const int stride[1] = {image.width * 4};
       sws_scale(sws, src, stride, 0, image.height, frame->data, frame->linesize);
@@ -262,97 +268,80 @@ void BM_Convert(benchmark::State& state) {
   av_frame_free(&frame);
   sws_freeContext(sws);
   state.counters["ms_per_frame"] = 1e3 * total / kFrames;
-  g_fps[exact ? "convert/exact" : "convert/fast"].push_back(kFrames / total);
+  g_values[exact ? "convert/exact" : "convert/fast"].push_back(kFrames / total);
 }
 
-// ---- the render command ---------------------------------------------------------------------
+// ---- the render command against x264 alone --------------------------------------------------
 
-// Runs `chainbreak render` on the clip; returns the wall time, or < 0 if it failed, and
-// the CPU time of the process in `cpu`.
-// posix_spawn, not fork: this process holds ~2 GB of frames, whose page tables a fork
-// would copy on the clock.
-double run_render(const char* preset, const fs::path& out, double& cpu) {
-  std::string exe = CHAINBREAK_EXE, scene = scene_path(), out_path = out.string();
-  std::string t_end = std::string("integrator.t_end=") + kTauEnd, preset_name = preset;
-  std::string words[] = {"render", "-o", "--set", "--preset", "--quiet"};
-  char* argv[] = {exe.data(),         words[0].data(), scene.data(), words[1].data(),
-                  out_path.data(),    words[2].data(), t_end.data(), words[3].data(),
-                  preset_name.data(), words[4].data(), nullptr};
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);  // the path it prints
-  const auto start = Clock::now();
-  pid_t pid = 0;
-  const int err = posix_spawn(&pid, exe.c_str(), &actions, nullptr, argv, environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (err != 0) return -1;
-  int status = 0;
-  rusage usage{};
-  if (::wait4(pid, &status, 0, &usage) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    return -1;
-  cpu = cpu_seconds(usage);
-  return seconds_since(start);
-}
+// What one half of a pair measured.
+struct Half {
+  double seconds = -1, cores = 0, others = 0;
+};
 
-void BM_Render(benchmark::State& state) {
+void BM_Video(benchmark::State& state) {
   const char* preset = kPresets[state.range(0)];
   state.SetLabel(preset);
+  if (g_frames.empty()) return state.SkipWithError(g_clip_error.c_str());
   // tmpfs: the file system is not what is measured.
   const fs::path dir = fs::path("/dev/shm") / ("bench_video-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const fs::path out = dir / "anomalous_breaking.mp4";
-  double total = 0.0, cpu = 0.0;
+  static int pairs = 0;  // alternates the order: neither half always runs first
+  Half alone, render;
+  double convert = 0.0;
   for (auto _ : state) {
-    total = run_render(preset, out, cpu);
-    if (total < 0) {
-      fs::remove_all(dir);
-      return state.SkipWithError("chainbreak render failed (run it by hand to see why)");
+    for (int half = 0; half < 2; ++half) {
+      const Meter meter;
+      if ((half + pairs) % 2 == 0) {
+        alone.seconds = encode_alone(preset, convert);
+        alone.cores = meter.cores(), alone.others = meter.others();
+      } else {
+        render.seconds = run_chainbreak({"render", scene_path(), "-o", out.string(), "--set",
+                                         kClipEnd, "--preset", preset, "--quiet"});
+        render.cores = meter.cores(), render.others = meter.others();
+      }
     }
-    state.SetIterationTime(total);
+    ++pairs;
+    if (alone.seconds < 0 || render.seconds < 0) break;
+    state.SetIterationTime(alone.seconds + render.seconds);
   }
-  // The same clip as the others: the sidecar must say kFrames frames at 1920x1080.
+  // The same clip as the frames in memory: the sidecar must say kFrames frames at 1080p.
   std::ifstream in(dir / "anomalous_breaking.json");
   std::stringstream sidecar;
   sidecar << in.rdbuf();
   fs::remove_all(dir);
+  if (alone.seconds < 0) return state.SkipWithError("libx264 failed");
+  if (render.seconds < 0)
+    return state.SkipWithError("chainbreak render failed (run it by hand to see why)");
   if (sidecar.str().find("\"frames\":" + std::to_string(kFrames) + ",") == std::string::npos ||
       sidecar.str().find("\"width\":1920,\"height\":1080") == std::string::npos)
     return state.SkipWithError("the render made another clip than the benchmark's frames");
-  state.counters["fps"] = kFrames / total;
-  state.counters["cores"] = cpu / total;
-  g_cores[std::string("render/") + preset].push_back(cpu / total);
-  g_fps[std::string("render/") + preset].push_back(kFrames / total);
+
+  const double fx = kFrames / alone.seconds, fr = kFrames / render.seconds;
+  state.counters["x264_fps"] = fx;
+  state.counters["render_fps"] = fr;
+  state.counters["ratio"] = fr / fx;
+  state.counters["x264_cores"] = alone.cores;  // x264's threads included
+  state.counters["render_cores"] = render.cores;
+  state.counters["others"] = std::max(alone.others, render.others);
+  state.counters["convert_ms"] = 1e3 * convert / kFrames;  // per frame, inside x264 alone
+  const std::string p = preset;
+  g_values["x264/" + p].push_back(fx);
+  g_values["render/" + p].push_back(fr);
+  g_values["ratio/" + p].push_back(fr / fx);
+  g_values["x264_cpu/" + p].push_back(alone.cores / fx);  // CPU seconds per frame
+  g_values["render_cpu/" + p].push_back(render.cores / fr);
+  g_values["others/" + p].push_back(std::max(alone.others, render.others));
 }
 
-// ---- drawing alone --------------------------------------------------------------------------
-
-void BM_Draw(benchmark::State& state) {
-  if (g_clip.frames.empty()) return state.SkipWithError(g_clip.error.c_str());
-  double total = 0.0, cpu = 0.0;
-  for (auto _ : state) {
-    const double cpu_start = process_cpu_seconds();  // llvmpipe's raster threads included
-    const auto start = Clock::now();
-    for (const auto& snapshot : g_clip.snapshots)
-      benchmark::DoNotOptimize(g_clip.renderer->render(snapshot).rgba.data());
-    total = seconds_since(start);
-    cpu = process_cpu_seconds() - cpu_start;
-    state.SetIterationTime(total);
-  }
-  state.counters["fps"] = kFrames / total;
-  state.counters["cores"] = cpu / total;
-  g_cores["draw"].push_back(cpu / total);
-  g_fps["draw"].push_back(kFrames / total);
-}
-
-// One iteration is a whole clip (seconds); wall time, because x264's and the render
-// process's threads are not the benchmark thread. Repetitions interleave at random (main).
+// One iteration is a whole clip (BM_Video: a pair of them), in seconds of wall time: x264's
+// threads and the render process are not the benchmark thread. Repetitions interleave at
+// random (main).
 void common(benchmark::internal::Benchmark* b) {
   b->Iterations(1)->Repetitions(kRepetitions)->UseManualTime()->Unit(benchmark::kSecond);
 }
-BENCHMARK(BM_Draw)->Apply(common);
 BENCHMARK(BM_Convert)->DenseRange(0, 1)->Apply(common);
-BENCHMARK(BM_X264Alone)->DenseRange(0, 2)->Apply(common);
-BENCHMARK(BM_Render)->DenseRange(0, 2)->Apply(common);
+BENCHMARK(BM_Video)->DenseRange(0, 2)->Apply(common);
 
 double median(std::vector<double> v) {
   if (v.empty()) return 0.0;
@@ -362,21 +351,24 @@ double median(std::vector<double> v) {
 }
 
 void print_summary() {
+  auto m = [](const std::string& name) { return median(g_values[name]); };
   std::printf(
       "\nbench_video: %d frames of anomalous_breaking.toml at 1920x1080, 60 fps, crf 18; "
-      "medians of %d; frames/s (busy cores)\n",
+      "medians of %d\n",
       kFrames, kRepetitions);
-  std::printf("draw + readback alone: %.1f (%.2f)\n", median(g_fps["draw"]),
-              median(g_cores["draw"]));
-  std::printf("RGBA -> yuv420p alone, one thread: %.1f as the encoder does it, %.1f fast\n",
-              median(g_fps["convert/exact"]), median(g_fps["convert/fast"]));
-  std::printf("%-10s %18s %18s %12s\n", "preset", "x264 alone", "render", "render/x264");
-  for (const char* p : kPresets) {
-    const std::string x = std::string("x264/") + p, r = std::string("render/") + p;
-    const double fx = median(g_fps[x]), fr = median(g_fps[r]);
-    std::printf("%-10s %11.1f (%.2f) %11.1f (%.2f) %12.3f\n", p, fx, median(g_cores[x]), fr,
-                median(g_cores[r]), fx > 0 ? fr / fx : 0.0);
-  }
+  std::printf(
+      "RGBA -> yuv420p alone, one thread: %.1f frames/s as the encoder does it, %.1f fast\n",
+      m("convert/exact"), m("convert/fast"));
+  std::printf("%-10s %8s %8s %8s %11s %11s %8s\n", "preset", "x264", "render", "ratio", "x264 cpu",
+              "render cpu", "others");
+  std::printf("%-10s %8s %8s %8s %11s %11s %8s\n", "", "fps", "fps", "", "ms/frame", "ms/frame",
+              "cores");
+  // CPU per frame: busy cores / frames per second. Their difference is what render does
+  // besides encoding (physics, overlay history, drawing, readback, process start).
+  for (const std::string p : kPresets)
+    std::printf("%-10s %8.1f %8.1f %8.3f %11.1f %11.1f %8.2f\n", p.c_str(), m("x264/" + p),
+                m("render/" + p), m("ratio/" + p), 1e3 * m("x264_cpu/" + p),
+                1e3 * m("render_cpu/" + p), m("others/" + p));
 }
 
 }  // namespace
@@ -391,18 +383,9 @@ int main(int argc, char** argv) {
   int count = static_cast<int>(args.size());
   benchmark::Initialize(&count, args.data());
   if (benchmark::ReportUnrecognizedArguments(count, args.data())) return 1;
-  try {
-    make_clip();
-  } catch (const std::exception& e) {
-    g_clip.error = std::string("cannot make the frames: ") + e.what();
-    g_clip.frames.clear();
-  }
+  make_clip();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   print_summary();
-  // GL objects, then the context, before exit: a context still alive in a static destructor
-  // crashes inside OSMesa, whose own exit handlers have run by then.
-  g_clip.renderer.reset();
-  g_clip.context.reset();
   return 0;
 }
