@@ -18,6 +18,7 @@
 #include "app/progress.h"
 #include "app/render_plan.h"
 #include "output/frame_writer.h"
+#include "output/output_file.h"
 #include "output/video_encoder.h"
 #include "overlay/overlay.h"
 #include "overlay/overlay_history.h"
@@ -73,9 +74,21 @@ std::unique_ptr<FrameSink> open_sink(const RenderOptions& o, const SceneDesc& sc
 
 int render_command(const RenderOptions& o) {
   const SceneDesc scene = load_scene(o.scene, o.overrides);
-  const RenderPlan plan = plan_render(scene, o);
-  // Opening the sink checks the output folder and the encoder before any work.
-  std::unique_ptr<FrameSink> sink = open_sink(o, scene, plan);
+  RenderPlan plan = plan_render(scene, o);
+  // The default folder is made on demand; a dry run only checks it could be.
+  const bool default_folder = o.output.empty() && o.frames_dir.empty();
+  if (default_folder && !std::filesystem::exists("renders")) {
+    if (o.dry_run)
+      check_output_dir(".");
+    else
+      std::filesystem::create_directories("renders");
+  }
+  // Opening the sink checks the output folder and the encoder before any work (the physics
+  // pre-pass below can take a while for a large chain).
+  std::unique_ptr<FrameSink> sink;
+  if (!(o.dry_run && default_folder && !std::filesystem::exists("renders")))
+    sink = open_sink(o, scene, plan);
+  measure_plan(scene, plan);
   if (o.dry_run) {
     std::printf("%s\n", plan_json(scene, plan, "", {}).c_str());
     return 0;  // the sink's destructor removes its temporary file

@@ -87,7 +87,6 @@ RenderPlan plan_render(const SceneDesc& scene, const RenderOptions& o) {
     p.codec = "png";
   } else {
     p.output = o.output.empty() ? (fs::path("renders") / (scene.name + ".mp4")).string() : o.output;
-    if (o.output.empty()) fs::create_directories("renders");
     p.codec = video_codec_name(p.output);  // throws for an unsupported extension
     if (p.frame.fps != std::floor(p.frame.fps))
       throw SceneError("fps " + number_text(p.frame.fps) +
@@ -101,6 +100,11 @@ RenderPlan plan_render(const SceneDesc& scene, const RenderOptions& o) {
   p.dt = p.tau_per_frame / static_cast<double>(p.substeps);
   p.overlay = overlay_switches(p.frame, o);
   p.overlay_layout = overlay_layout(p.frame.width, p.frame.height, p.overlay);
+  p.scene_hash = scene_hash(scene, o.overrides);
+  return p;
+}
+
+void measure_plan(const SceneDesc& scene, RenderPlan& p) {
   // With the overlay the pre-pass also samples, at the frame times, the plots' extremes.
   p.extent =
       measure_run(scene, scene.integrator.t_end, p.dt, p.overlay_layout.enabled ? p.substeps : 0);
@@ -118,8 +122,6 @@ RenderPlan plan_render(const SceneDesc& scene, const RenderOptions& o) {
     s.energy_max = p.extent.energy_max;
     s.strain_scale = p.style.threshold > 0 ? p.style.threshold : p.style.strain_range;
   }
-  p.scene_hash = scene_hash(scene, o.overrides);
-  return p;
 }
 
 std::string plan_json(const SceneDesc& scene, const RenderPlan& p, const std::string& gl,

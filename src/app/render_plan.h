@@ -32,9 +32,11 @@ struct RenderPlan {
   std::string scene_hash;  // of the scene file and the overrides
 };
 
-// Validates the options against the scene and measures the run (a physics pre-pass).
-// Throws SceneError for a user mistake.
+// Validates the options against the scene: size, frame times, output and codec. Cheap, so
+// that mistakes surface before any work. Throws SceneError for a user mistake.
 RenderPlan plan_render(const SceneDesc& scene, const RenderOptions& options);
+// Measures the run (the physics pre-pass): where it stops, the frame count, the layout.
+void measure_plan(const SceneDesc& scene, RenderPlan& plan);
 
 // The JSON sidecar: scene, parameters after overrides, frames, timing, codec, GL, breaks.
 std::string plan_json(const SceneDesc& scene, const RenderPlan& plan, const std::string& gl,

@@ -10,9 +10,7 @@ namespace cb {
 
 void require_writable_dir(const std::string& dir) {
   namespace fs = std::filesystem;
-  if (!fs::is_directory(dir))
-    throw OutputError(dir + ": no such directory; create it (mkdir -p " + dir +
-                      ") or choose another");
+  check_output_dir(dir);
   OutputFile probe((fs::path(dir) / ".chainbreak-write-test").string());  // throws if unwritable
 }
 

@@ -16,17 +16,34 @@ std::string reason(int err) {
 
 }  // namespace
 
+void check_output_dir(const std::string& dir) {
+  namespace fs = std::filesystem;
+  if (fs::exists(dir) && !fs::is_directory(dir))
+    throw OutputError(dir + ": is a file, not a directory; choose another path");
+  if (!fs::is_directory(dir))
+    throw OutputError(dir + ": the directory does not exist; create it (mkdir -p " + dir +
+                      ") or choose another path");
+}
+
+void check_output_path(const std::string& path, const std::string& example) {
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  if (fs::is_directory(target))
+    throw OutputError(path + ": is a directory; give a file name, e.g. " +
+                      (target / example).string());
+  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  try {
+    check_output_dir(dir.string());
+  } catch (const OutputError& e) {
+    throw OutputError(path + ": " + e.what());
+  }
+}
+
 OutputFile::OutputFile(std::string path) : path_(std::move(path)) {
   namespace fs = std::filesystem;
+  check_output_path(path_, "out" + fs::path(path_).extension().string());
   const fs::path target(path_);
-  if (fs::is_directory(target))
-    throw OutputError(path_ + ": is a directory; give a file name, e.g. " +
-                      (target / "out.csv").string());
   const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  if (!fs::is_directory(dir))
-    throw OutputError(path_ + ": the directory " + dir.string() +
-                      " does not exist; create it (mkdir -p " + dir.string() +
-                      ") or choose another path");
   // A hidden name in the same directory, so that the final rename cannot cross filesystems.
   std::string hidden(".");
   hidden.append(target.filename().string()).append(".part-").append(std::to_string(::getpid()));

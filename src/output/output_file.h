@@ -13,6 +13,14 @@ struct OutputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Checks that `path` can name a new file: not a folder, in a folder that exists (and is not
+// a file). Throws OutputError saying what is wrong and how to fix it. `example` is a file
+// name to suggest when `path` is a folder (e.g. "out.mp4").
+void check_output_path(const std::string& path, const std::string& example);
+
+// Same for a folder that output goes into.
+void check_output_dir(const std::string& dir);
+
 class OutputFile {
  public:
   // Opens the temporary file at once, so an unwritable directory is reported before any

@@ -180,15 +180,9 @@ struct VideoEncoder::Impl {
 };
 
 void VideoEncoder::Impl::open() {
+  check_output_path(path, std::string("out") + format->extension);
   const fs::path target(path);
-  if (fs::is_directory(target))
-    throw OutputError(path + ": is a directory; give a file name, e.g. " +
-                      (target / (std::string("out") + format->extension)).string());
   const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  if (!fs::is_directory(dir))
-    throw OutputError(path + ": the directory " + dir.string() +
-                      " does not exist; create it (mkdir -p " + dir.string() +
-                      ") or choose another path");
   temp = temp_name_for(dir / target.filename());
 
   int err = avformat_alloc_output_context2(&mux, nullptr, format->muxer, temp.c_str());
