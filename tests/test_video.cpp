@@ -144,27 +144,6 @@ TEST_CASE("MP4: H.264 yuv420p, exact timing, moov first, reproducible, faithful"
   CHECK(f.max < 40);
 }
 
-TEST_CASE("MP4: pictures of 256 rows and more, converted in two halves, stay faithful",
-          "[video]") {
-  // From 256 rows the encoder converts the top and bottom halves on two threads; the split
-  // row (here 180) must not show, and the output must stay reproducible.
-  TempDir dir;
-  const std::string a = dir.file("a.mp4"), b = dir.file("b.mp4");
-  encode(a, 640, 360, 20);
-  encode(b, 640, 360, 20);
-  CHECK(read_bytes(a) == read_bytes(b));
-  const Decoded d = decode(a, 10);
-  REQUIRE(d.height == 360);
-  // The same bounds as for one-pass conversion above (measured here: the same errors).
-  const Fidelity f = compare_flat(make_frame(640, 360, 10), d.picture);
-  for (double m : f.mean) CHECK(m < 3.0);
-  CHECK(f.max < 40);
-  // Rows either side of the split: the flat background keeps its colour within the bound.
-  for (int y : {178, 179, 180, 181})
-    for (int c = 0; c < 3; ++c)
-      CHECK(std::abs(d.picture.pixel(100, y)[c] - make_frame(640, 360, 10).pixel(100, y)[c]) < 6);
-}
-
 TEST_CASE("MP4: odd sizes are padded by one pixel with the edge colour", "[video]") {
   TempDir dir;
   const std::string path = dir.file("odd.mp4");

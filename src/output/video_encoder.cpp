@@ -144,9 +144,7 @@ struct VideoEncoder::Impl {
   AVCodecContext* codec = nullptr;
   AVFrame* frame = nullptr;
   AVPacket* packet = nullptr;
-  SwsContext* sws = nullptr;         // the top half of the picture (all of it if small)
-  SwsContext* sws_bottom = nullptr;  // the bottom half, converted on a second thread
-  int split_row = 0;                 // first row of the bottom half (even), 0 = no split
+  SwsContext* sws = nullptr;
   std::vector<std::uint8_t> padded;  // odd-sized RGBA frames, padded to the coded size
   std::unique_ptr<gif::Quantizer> quantizer;
   std::int64_t next_pts = 0;
@@ -278,23 +276,13 @@ void VideoEncoder::Impl::open_codec() {
   if (yuv) {
     // No scaling, only RGB -> Y'CbCr: accurate rounding and bit-exact arithmetic keep the
     // output identical everywhere; bilinear filtering is what the 2x chroma reduction uses.
-    // The conversion is the one serial stage in front of x264 (5-11 ms a 1080p frame): the
-    // two halves of the picture are converted at once, each by a context of its own. The
-    // split row is even, so each half's 4:2:0 chroma rows are its own; the only difference
-    // from one pass is the chroma filter's edge clamping at the split, always the same.
-    split_row = coded_height >= 256 ? (coded_height / 2) & ~1 : 0;
-    auto make = [&](int rows) {
-      SwsContext* c =
-          sws_getContext(coded_width, rows, AV_PIX_FMT_RGBA, coded_width, rows, AV_PIX_FMT_YUV420P,
-                         SWS_BILINEAR | SWS_ACCURATE_RND | SWS_BITEXACT, nullptr, nullptr, nullptr);
-      if (!c) throw std::bad_alloc();
-      const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
-      // Source: full-range RGB; destination: BT.709 limited range, as tagged above.
-      sws_setColorspaceDetails(c, bt709, 1, bt709, 0, 0, 1 << 16, 1 << 16);
-      return c;
-    };
-    sws = make(split_row ? split_row : coded_height);
-    if (split_row) sws_bottom = make(coded_height - split_row);
+    sws = sws_getContext(coded_width, coded_height, AV_PIX_FMT_RGBA, coded_width, coded_height,
+                         AV_PIX_FMT_YUV420P, SWS_BILINEAR | SWS_ACCURATE_RND | SWS_BITEXACT,
+                         nullptr, nullptr, nullptr);
+    if (!sws) throw std::bad_alloc();
+    const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
+    // Source: full-range RGB; destination: BT.709 limited range, as tagged above.
+    sws_setColorspaceDetails(sws, bt709, 1, bt709, 0, 0, 1 << 16, 1 << 16);
   }
 }
 
@@ -356,21 +344,7 @@ void VideoEncoder::Impl::convert_yuv(const Image& image) {
     src[0] = padded.data();
     src_stride[0] = static_cast<int>(row_bytes);
   }
-  if (!split_row) {
-    sws_scale(sws, src, src_stride, 0, coded_height, frame->data, frame->linesize);
-    return;
-  }
-  std::thread bottom([&] {
-    const std::uint8_t* from[1] = {src[0] + static_cast<std::size_t>(split_row) * src_stride[0]};
-    // swscale reads four plane pointers whatever the format.
-    std::uint8_t* to[4] = {
-        frame->data[0] + static_cast<std::ptrdiff_t>(split_row) * frame->linesize[0],
-        frame->data[1] + static_cast<std::ptrdiff_t>(split_row / 2) * frame->linesize[1],
-        frame->data[2] + static_cast<std::ptrdiff_t>(split_row / 2) * frame->linesize[2], nullptr};
-    sws_scale(sws_bottom, from, src_stride, 0, coded_height - split_row, to, frame->linesize);
-  });
-  sws_scale(sws, src, src_stride, 0, split_row, frame->data, frame->linesize);
-  bottom.join();
+  sws_scale(sws, src, src_stride, 0, coded_height, frame->data, frame->linesize);
 }
 
 void VideoEncoder::Impl::convert_gif(const Image& image) {
@@ -478,8 +452,7 @@ std::string VideoEncoder::Impl::commit(const std::string& target, bool partial) 
 
 void VideoEncoder::Impl::release() {
   sws_freeContext(sws);
-  sws_freeContext(sws_bottom);
-  sws = sws_bottom = nullptr;
+  sws = nullptr;
   av_frame_free(&frame);
   av_packet_free(&packet);
   avcodec_free_context(&codec);
