@@ -11,15 +11,13 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "test_support.h"
+
 namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-  int status = -1;
-  std::string out;  // stdout (stderr is sent to err_file)
-  std::string err;
-};
+using Result = cb::test::RunResult;
 
 fs::path temp_dir() {
   const fs::path dir = fs::temp_directory_path() / ("chainbreak_cli_" + std::to_string(::getpid()));
@@ -35,17 +33,7 @@ std::string slurp(const fs::path& p) {
 }
 
 Result chainbreak(const std::string& args) {
-  const fs::path err = temp_dir() / "stderr.txt";
-  const std::string cmd = std::string(CHAINBREAK_EXE) + " " + args + " 2>" + err.string();
-  Result r;
-  FILE* pipe = ::popen(cmd.c_str(), "r");
-  REQUIRE(pipe);
-  char buf[4096];
-  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) r.out.append(buf, n);
-  const int raw = ::pclose(pipe);
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.err = slurp(err);
-  return r;
+  return cb::test::run_chainbreak(args);
 }
 
 std::string scene(const std::string& name) {

@@ -22,6 +22,7 @@
 
 #include "gl_test_support.h"
 #include "output/png_writer.h"
+#include "test_support.h"
 #include "video_probe.h"
 
 namespace fs = std::filesystem;
@@ -29,48 +30,12 @@ using nlohmann::json;
 
 namespace {
 
-// A fresh directory per test, removed afterwards (permissions restored first).
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    static int counter = 0;
-    path = fs::temp_directory_path() /
-           ("chainbreak-render-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::permissions(path, fs::perms::owner_all, ec);
-    fs::remove_all(path, ec);
-  }
-  std::string file(const std::string& name) const { return (path / name).string(); }
-  std::vector<std::string> names() const {
-    std::vector<std::string> out;
-    for (const auto& e : fs::directory_iterator(path)) out.push_back(e.path().filename().string());
-    std::sort(out.begin(), out.end());
-    return out;
-  }
+struct TempDir : cb::test::TempDir {
+  TempDir() : cb::test::TempDir("chainbreak-render") {}
 };
-
-struct Result {
-  int status = -1;
-  std::string out, err;
-};
-
-// Runs `chainbreak ARGS` through the shell (the arguments here have no spaces or quotes).
+using Result = cb::test::RunResult;
 Result chainbreak(const std::string& args) {
-  const TempDir scratch;
-  const std::string cmd = std::string(CHAINBREAK_EXE) + " " + args + " 2>" + scratch.file("err");
-  Result r;
-  FILE* pipe = ::popen(cmd.c_str(), "r");
-  REQUIRE(pipe);
-  char buf[4096];
-  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) r.out.append(buf, n);
-  const int raw = ::pclose(pipe);
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.err = cb::test::read_bytes(scratch.file("err"));
-  return r;
+  return cb::test::run_chainbreak(args);
 }
 
 std::string scene(const std::string& name) {

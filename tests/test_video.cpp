@@ -17,6 +17,7 @@
 #include "output/gif_palette.h"
 #include "output/output_file.h"
 #include "output/video_encoder.h"
+#include "test_support.h"
 #include "video_probe.h"
 
 namespace fs = std::filesystem;
@@ -28,24 +29,8 @@ using cb::test::top_level_boxes;
 
 namespace {
 
-// A fresh directory per test, removed afterwards.
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    static int counter = 0;
-    path = fs::temp_directory_path() /
-           ("chainbreak-video-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-  std::string file(const std::string& name) const { return (path / name).string(); }
-  std::vector<std::string> names() const {
-    std::vector<std::string> out;
-    for (const auto& e : fs::directory_iterator(path)) out.push_back(e.path().filename().string());
-    std::sort(out.begin(), out.end());
-    return out;
-  }
+struct TempDir : cb::test::TempDir {
+  TempDir() : cb::test::TempDir("chainbreak-video") {}
 };
 
 void fill(Image& im, int x0, int y0, int w, int h, int r, int g, int b) {
