@@ -215,9 +215,7 @@ int run_formula(const RunOptions& o, const SceneDesc& scene, CsvTable* csv) {
     s.tau = static_cast<double>(step) * dt;
     s.f = f(s.tau);
     if (exact) {
-      chain->psi(s.tau, s.psi);
-      chain->velocity(s.tau, s.vel);
-      chain->phi(s.tau, s.phi);
+      chain->evaluate(s.tau, &s.psi, &s.vel, &s.phi, nullptr);
     } else {
       constexpr double kDelta = 1e-4;
       continuum_psi(s.tau, s.psi, &s.phi);

@@ -163,29 +163,29 @@ void ExactChain::modal_expr(double tau, std::vector<double>& x, std::vector<doub
   }
 }
 
-// Eq. (exactpsi): psi_j = sum_n c_n sin(k_n j) x_n.
+// Eq. (exactpsi): psi_j = sum_n c_n sin(k_n j) x_n; phi_j likewise with the spring weights.
+// The modal amplitudes are computed once for whatever is asked.
+void ExactChain::evaluate(double tau, std::vector<double>* psi, std::vector<double>* velocity,
+                          std::vector<double>* phi, std::vector<double>* phi_rate) const {
+  std::vector<double> x, v;
+  modal(tau, x, v);
+  if (psi) apply(psi_w_, x, *psi);
+  if (velocity) apply(psi_w_, v, *velocity);
+  if (phi) apply(phi_w_, x, *phi);
+  if (phi_rate) apply(phi_w_, v, *phi_rate);
+}
+
 void ExactChain::psi(double tau, std::vector<double>& out) const {
-  std::vector<double> x, v;
-  modal(tau, x, v);
-  apply(psi_w_, x, out);
+  evaluate(tau, &out, nullptr, nullptr, nullptr);
 }
-
 void ExactChain::velocity(double tau, std::vector<double>& out) const {
-  std::vector<double> x, v;
-  modal(tau, x, v);
-  apply(psi_w_, v, out);
+  evaluate(tau, nullptr, &out, nullptr, nullptr);
 }
-
 void ExactChain::phi(double tau, std::vector<double>& out) const {
-  std::vector<double> x, v;
-  modal(tau, x, v);
-  apply(phi_w_, x, out);
+  evaluate(tau, nullptr, nullptr, &out, nullptr);
 }
-
 void ExactChain::phi_rate(double tau, std::vector<double>& out) const {
-  std::vector<double> x, v;
-  modal(tau, x, v);
-  apply(phi_w_, v, out);
+  evaluate(tau, nullptr, nullptr, nullptr, &out);
 }
 
 double ExactChain::psi(int bead, double tau) const {

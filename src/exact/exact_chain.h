@@ -36,6 +36,9 @@ class ExactChain {
   void velocity(double tau, std::vector<double>& out) const;
   void phi(double tau, std::vector<double>& out) const;
   void phi_rate(double tau, std::vector<double>& out) const;  // d phi_j / d tau
+  // Any of the four at once (null: not wanted), from one evaluation of the modes.
+  void evaluate(double tau, std::vector<double>* psi, std::vector<double>* velocity,
+                std::vector<double>* phi, std::vector<double>* phi_rate) const;
 
   double psi(int bead, double tau) const;
   double phi(int spring, double tau) const;
