@@ -24,6 +24,7 @@
 #include "gl_test_support.h"
 #include "output/image.h"
 #include "output/png_writer.h"
+#include "output/yuv420.h"
 #include "physics/integrator.h"
 #include "render/renderer.h"
 #include "render/text.h"
@@ -422,6 +423,24 @@ TEST_CASE("Rendering is deterministic, down to the PNG bytes", "[render]") {
   CHECK(a == read_all(dir / "b.png"));
   CHECK(cb::read_png((dir / "a.png").string()).rgba == first.rgba);  // lossless round trip
   std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("read_yuv420 equals converting what read returns", "[render][yuv420]") {
+  const cb::GlBackend backend = GENERATE(cb::GlBackend::OSMesa, cb::GlBackend::Egl);
+  INFO("backend " << cb::gl_backend_name(backend));
+  auto context = cb::test::create_or_skip(backend);
+  if (!context) return;
+  // 481 x 271: odd, so H.264's padding applies; 271 rows: the last band is a partial one.
+  cb::Renderer renderer(481, 271);
+  renderer.draw(anomalous_frame(481, 271));
+  cb::Image rgba;
+  renderer.read(rgba);
+  cb::Yuv420Image direct, via_rgba;
+  renderer.read_yuv420(direct, 482, 272);
+  cb::rgba_to_yuv420({rgba.rgba.data(), 481, 271, 481 * 4, false}, 482, 272, via_rgba);
+  CHECK(direct.bytes == via_rgba.bytes);
+  CHECK(direct.width == 482);
+  CHECK_THROWS_AS(renderer.read_yuv420(direct, 480, 271), std::invalid_argument);
 }
 
 TEST_CASE("OSMesa and EGL draw the same frame", "[render]") {

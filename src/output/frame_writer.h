@@ -7,6 +7,8 @@
 #include <deque>
 #include <exception>
 #include <mutex>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -15,11 +17,24 @@
 
 namespace cb {
 
+struct PictureSize {
+  int width = 0, height = 0;
+};
+
 class FrameSink {
  public:
   virtual ~FrameSink() = default;
   virtual void push(Image image) = 0;  // frames arrive in order
-  virtual void finish() = 0;           // waits for everything; throws the first write error
+  // A sink that encodes Y'CbCr 4:2:0 (video) says at which size it takes it; the caller may
+  // then convert each frame itself (e.g. on the GPU) and push_yuv420 it instead of push.
+  virtual std::optional<PictureSize> yuv420_size() const { return std::nullopt; }
+  virtual void push_yuv420(Yuv420Image) {
+    throw std::logic_error("this frame sink takes RGBA images only");
+  }
+  // A picture pushed earlier and done with, to fill again (its memory is reused); empty when
+  // there is none yet.
+  virtual Yuv420Image spare_yuv420() { return {}; }
+  virtual void finish() = 0;  // waits for everything; throws the first write error
 };
 
 class PngSequence : public FrameSink {

@@ -68,6 +68,12 @@ class VideoEncoder : public FrameSink {
   // Queues the image (moved, not copied); blocks only while the queue is full. Throws the
   // worker's first error (OutputError), e.g. a full disk.
   void push(Image image) override;
+  // MP4 and WebM also take Y'CbCr 4:2:0 pictures converted by the caller (output/yuv420.h)
+  // at this size (the frame's, padded to even for H.264): the encoder's thread then only
+  // copies and encodes. GIF takes RGBA only.
+  std::optional<PictureSize> yuv420_size() const override;
+  void push_yuv420(Yuv420Image image) override;
+  Yuv420Image spare_yuv420() override;
   // Encodes what is queued, flushes the encoder, completes the container and renames it to
   // the requested path. Throws OutputError; then no file is left at the requested path.
   void finish() override;

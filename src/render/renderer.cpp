@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "gl/gl_loader.h"
+#include "output/yuv420.h"
 #include "render/shader_interface.h"
 #include "render/shader_program.h"
 #include "render/text.h"
@@ -121,6 +122,7 @@ struct Renderer::Impl {
   std::vector<TriangleVertex> triangle_data;
   std::vector<Rect> text_rects;
   std::vector<std::uint8_t> row;  // for flipping rows on readback
+  std::vector<std::uint8_t> raw;  // read_yuv420's RGBA, as GL gives it (bottom-up)
 
   Impl(int w, int h) : width(w), height(h) {
     if (w <= 0 || h <= 0 || w > 16384 || h > 16384)
@@ -285,6 +287,27 @@ void Renderer::read(Image& out) {
     std::memcpy(im.row.data(), a, row);
     std::memcpy(a, b, row);
     std::memcpy(b, im.row.data(), row);
+  }
+}
+
+void Renderer::read_yuv420(Yuv420Image& out, int width, int height) {
+  Impl& im = *impl_;
+  if (width < im.width || height < im.height)
+    throw std::invalid_argument("read_yuv420: the picture must not be smaller than the frame");
+  out.resize(width, height);
+  glBindFramebuffer(GL_FRAMEBUFFER, im.fbo);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  // Bands of rows, each converted while it is still in the cache (a 1080p band of 32 rows
+  // is 240 KB; the whole frame, 8 MB, would not stay there). GL's rows run bottom-up, so
+  // the band of picture rows [top, top + rows) sits at GL rows [h - top - rows, h - top).
+  constexpr int kBand = 32;  // even: no chroma block straddles two bands
+  im.raw.resize(static_cast<std::size_t>(im.width) * kBand * 4);
+  for (int top = 0; top < im.height; top += kBand) {
+    const int rows = std::min(kBand, im.height - top);
+    glReadPixels(0, im.height - top - rows, im.width, rows, GL_RGBA, GL_UNSIGNED_BYTE,
+                 im.raw.data());
+    yuv420_from_rows({im.raw.data(), im.width, rows, im.width * 4, true}, top, im.height, out);
   }
 }
 

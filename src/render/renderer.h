@@ -26,6 +26,10 @@ class Renderer {
   int height() const;
   void draw(const RenderSnapshot& snapshot);  // into the off-screen framebuffer (stays bound)
   void read(Image& out);                      // glReadPixels, rows flipped to top-down
+  // The frame as an encoder takes it (Y'CbCr 4:2:0, BT.709, limited range; output/yuv420.h):
+  // width x height may exceed the frame by the padding H.264 needs (the edge repeats).
+  // Cheaper than read() and a conversion afterwards: the rows need no flip.
+  void read_yuv420(Yuv420Image& out, int width, int height);
   Image render(const RenderSnapshot& snapshot) {
     draw(snapshot);
     Image image;
