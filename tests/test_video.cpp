@@ -17,6 +17,7 @@
 #include "output/gif_palette.h"
 #include "output/output_file.h"
 #include "output/video_encoder.h"
+#include "output/yuv420.h"
 #include "test_support.h"
 #include "video_probe.h"
 
@@ -54,11 +55,26 @@ Image make_frame(int w, int h, int k) {
   return im;
 }
 
+// How frames reach the encoder: RGBA (converted by swscale inside the encoder), or already
+// Y'CbCr 4:2:0 from output/yuv420.h, as `render` hands them over.
+enum class Input { rgba, planar };
+
 void encode(const std::string& path, int w, int h, int frames,
-            cb::VideoSettings settings = cb::VideoSettings{}) {
+            cb::VideoSettings settings = cb::VideoSettings{}, Input input = Input::rgba) {
   settings.width = w, settings.height = h, settings.fps = 30;
   auto sink = cb::open_video(path, settings);
-  for (int k = 0; k < frames; ++k) sink->push(make_frame(w, h, k));
+  for (int k = 0; k < frames; ++k) {
+    const Image frame = make_frame(w, h, k);
+    if (input == Input::rgba) {
+      sink->push(frame);
+      continue;
+    }
+    const auto size = sink->yuv420_size();
+    REQUIRE(size);
+    cb::Yuv420Image picture = sink->spare_yuv420();
+    cb::rgba_to_yuv420({frame.rgba.data(), w, h, w * 4, false}, size->width, size->height, picture);
+    sink->push_yuv420(std::move(picture));
+  }
   sink->finish();
 }
 
@@ -130,9 +146,11 @@ TEST_CASE("MP4: H.264 yuv420p, exact timing, moov first, reproducible, faithful"
 }
 
 TEST_CASE("MP4: odd sizes are padded by one pixel with the edge colour", "[video]") {
+  const Input how = GENERATE(Input::rgba, Input::planar);
+  INFO((how == Input::rgba ? "RGBA input" : "Y'CbCr input"));
   TempDir dir;
   const std::string path = dir.file("odd.mp4");
-  encode(path, 321, 241, 30);
+  encode(path, 321, 241, 30, {}, how);
   const Decoded d = decode(path, 0);
   CHECK(d.width == 322);   // 321 + 1 column
   CHECK(d.height == 242);  // 241 + 1 row
@@ -152,9 +170,11 @@ TEST_CASE("MP4: odd sizes are padded by one pixel with the edge colour", "[video
 }
 
 TEST_CASE("WebM: VP9 keeps odd sizes and every frame", "[video]") {
+  const Input how = GENERATE(Input::rgba, Input::planar);
+  INFO((how == Input::rgba ? "RGBA input" : "Y'CbCr input"));
   TempDir dir;
   const std::string path = dir.file("clip.webm");
-  encode(path, 321, 241, 30);
+  encode(path, 321, 241, 30, {}, how);
   const Decoded d = decode(path, 15);
   CHECK(d.container.find("webm") != std::string::npos);
   CHECK(d.codec == "vp9");
@@ -351,4 +371,23 @@ TEST_CASE("Video: a write error (file size limit) leaves nothing behind", "[vide
   CHECK(message.find("File too large") != std::string::npos);
   CHECK(message.find("Free some disk space") != std::string::npos);
   CHECK(dir.names().empty());
+}
+
+TEST_CASE("Y'CbCr input: MP4 asks for the even size, GIF takes RGBA only", "[video]") {
+  TempDir dir;
+  cb::VideoSettings settings;
+  settings.width = 321, settings.height = 241;
+  auto mp4 = cb::open_video(dir.file("a.mp4"), settings);
+  const auto size = mp4->yuv420_size();
+  REQUIRE(size);
+  CHECK(size->width == 322);
+  CHECK(size->height == 242);
+  cb::Yuv420Image wrong;
+  wrong.resize(321, 241);  // the frame's own size, not the coded one
+  CHECK_THROWS_AS(mp4->push_yuv420(std::move(wrong)), std::invalid_argument);
+  auto gif = cb::open_video(dir.file("a.gif"), settings);
+  CHECK_FALSE(gif->yuv420_size());
+  cb::Yuv420Image any;
+  any.resize(322, 242);
+  CHECK_THROWS(gif->push_yuv420(std::move(any)));
 }

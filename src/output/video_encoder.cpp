@@ -24,6 +24,7 @@ extern "C" {
 #include <deque>
 #include <exception>
 #include <filesystem>
+#include <memory>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
@@ -144,6 +145,7 @@ struct VideoEncoder::Impl {
   AVStream* stream = nullptr;
   AVCodecContext* codec = nullptr;
   AVFrame* frame = nullptr;
+  AVFrame* lent = nullptr;  // wraps a pushed Yuv420Image (send_yuv)
   AVPacket* packet = nullptr;
   SwsContext* sws = nullptr;
   std::vector<std::uint8_t> padded;  // odd-sized RGBA frames, padded to the coded size
@@ -165,9 +167,9 @@ struct VideoEncoder::Impl {
   void open();
   void open_codec();
   void work();
-  void encode(const std::variant<Image, Yuv420Image>& picture);
+  void encode(std::variant<Image, Yuv420Image>& picture);
+  void send_yuv(Yuv420Image&& image);
   void convert_yuv(const Image& image);
-  void copy_yuv(const Yuv420Image& image);
   void convert_gif(const Image& image);
   void send(const AVFrame* input);
   void stop_worker(bool drop_queued);
@@ -238,6 +240,8 @@ void VideoEncoder::Impl::open_codec() {
   codec = avcodec_alloc_context3(encoder);
   packet = av_packet_alloc();
   frame = av_frame_alloc();
+  lent = av_frame_alloc();
+  if (!lent) throw std::bad_alloc();
   if (!codec || !packet || !frame) throw std::bad_alloc();
   codec->width = coded_width;
   codec->height = coded_height;
@@ -325,26 +329,60 @@ void VideoEncoder::Impl::work() {
       error = std::current_exception();
       space.notify_all();
     }
-    if (auto* yuv = std::get_if<Yuv420Image>(&picture)) {
-      std::lock_guard lock(mutex);
-      if (spares.size() < capacity + 1) spares.push_back(std::move(*yuv));
-    }
   }
 }
 
-void VideoEncoder::Impl::encode(const std::variant<Image, Yuv420Image>& picture) {
+void VideoEncoder::Impl::encode(std::variant<Image, Yuv420Image>& picture) {
+  if (auto* yuv = std::get_if<Yuv420Image>(&picture)) return send_yuv(std::move(*yuv));
   // The encoder may still hold the previous frame (the GIF encoder keeps it to find what
   // changed): make_writable then gives this frame fresh buffers instead of overwriting.
   const int err = av_frame_make_writable(frame);
   if (err < 0) throw std::bad_alloc();
-  if (const auto* yuv = std::get_if<Yuv420Image>(&picture))
-    copy_yuv(*yuv);
-  else if (format->kind == Kind::gif)
-    convert_gif(std::get<Image>(picture));
+  const Image& image = std::get<Image>(picture);
+  if (format->kind == Kind::gif)
+    convert_gif(image);
   else
-    convert_yuv(std::get<Image>(picture));
+    convert_yuv(image);
   frame->pts = next_pts++;
   send(frame);
+}
+
+namespace {
+// A Y'CbCr picture lent to libavcodec: when its last reference goes, its memory returns to
+// the encoder's spares for the next frame.
+struct Lent {
+  std::mutex* mutex;
+  std::vector<Yuv420Image>* spares;
+  std::size_t keep;
+  Yuv420Image image;
+};
+void give_back(void* opaque, std::uint8_t*) {
+  std::unique_ptr<Lent> lent(static_cast<Lent*>(opaque));
+  std::lock_guard lock(*lent->mutex);
+  if (lent->spares->size() < lent->keep) lent->spares->push_back(std::move(lent->image));
+}
+}  // namespace
+
+// Already converted (output/yuv420.h, on the rendering thread): the encoder reads the
+// picture where it is, without a copy (x264 and libvpx copy it into their own frames).
+void VideoEncoder::Impl::send_yuv(Yuv420Image&& image) {
+  auto held = std::make_unique<Lent>(Lent{&mutex, &spares, capacity + 1, std::move(image)});
+  Yuv420Image& p = held->image;
+  AVBufferRef* buffer = av_buffer_create(p.bytes.data(), p.bytes.size(), give_back, held.get(), 0);
+  if (!buffer) throw std::bad_alloc();
+  held.release();  // the buffer owns it now
+  av_frame_unref(lent);
+  lent->buf[0] = buffer;
+  lent->format = codec->pix_fmt;
+  lent->width = coded_width;
+  lent->height = coded_height;
+  for (int k = 0; k < 3; ++k) {
+    lent->data[k] = p.plane(k);
+    lent->linesize[k] = k == 0 ? p.luma_stride : p.chroma_stride();
+  }
+  lent->pts = next_pts++;
+  send(lent);
+  av_frame_unref(lent);  // libavcodec holds its own reference for as long as it needs one
 }
 
 void VideoEncoder::Impl::convert_yuv(const Image& image) {
@@ -368,19 +406,6 @@ void VideoEncoder::Impl::convert_yuv(const Image& image) {
     src_stride[0] = static_cast<int>(row_bytes);
   }
   sws_scale(sws, src, src_stride, 0, coded_height, frame->data, frame->linesize);
-}
-
-// Already converted (output/yuv420.h, on the rendering thread): only the rows move into
-// the encoder's frame (~0.3 ms at 1080p).
-void VideoEncoder::Impl::copy_yuv(const Yuv420Image& image) {
-  for (int k = 0; k < 3; ++k) {
-    const int rows = k == 0 ? image.height : image.chroma_height();
-    const int bytes = k == 0 ? image.width : image.chroma_width();
-    const int stride = k == 0 ? image.luma_stride : image.chroma_stride();
-    for (int y = 0; y < rows; ++y)
-      std::memcpy(frame->data[k] + static_cast<std::ptrdiff_t>(y) * frame->linesize[k],
-                  image.plane(k) + static_cast<std::size_t>(y) * stride, bytes);
-  }
 }
 
 void VideoEncoder::Impl::convert_gif(const Image& image) {
@@ -490,6 +515,7 @@ void VideoEncoder::Impl::release() {
   sws_freeContext(sws);
   sws = nullptr;
   av_frame_free(&frame);
+  av_frame_free(&lent);
   av_packet_free(&packet);
   avcodec_free_context(&codec);
   if (mux) {
