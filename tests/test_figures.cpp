@@ -190,19 +190,21 @@ TEST_CASE("Figs. 3(c), 4(d), 5: RK4 points on the exact solution", "[figures]") 
     int spring;
     double gamma;
     bool sine;
+    std::size_t panel = 0;
   };
   for (const Case& c : {Case{"fig3c", "\u03C6\u2081 RK4", 1, 0.0, true},
                         Case{"fig3c", "\u03C6\u2083\u2080 RK4", 30, 0.0, true},
                         Case{"fig4d", "\u03C6\u2081 RK4", 1, 0.01, false},
                         Case{"fig4d", "\u03C6\u2083\u2080 RK4", 30, 0.01, false},
-                        Case{"fig5", "\u03C6\u2081 RK4", 1, 0.0, false}}) {
+                        Case{"fig5", "\u03C6\u2081 RK4", 1, 0.0, false},
+                        Case{"fig5", "\u03C6\u2081 RK4 (inset)", 1, 0.0, false, 1}}) {
     cb::DriveDesc d = ramp();
     if (c.sine) {
       d.type = cb::DriveType::Sine;
       d.period = 120.0;
     }
     const cb::ExactChain exact(30, c.gamma, d);
-    const cb::Series& s = series_of(built_figure(c.figure), c.series);
+    const cb::Series& s = series_of(built_figure(c.figure), c.series, c.panel);
     REQUIRE(s.x.size() > 50);
     for (std::size_t i = 0; i < s.x.size(); ++i) {
       INFO(c.figure << " " << c.series << " tau = " << s.x[i]);

@@ -1,4 +1,5 @@
 // Fig. 4 and Fig. 5 of the paper: a chain of N = 30 pulled by the ramp f = beta tau, beta = 1.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -143,7 +144,7 @@ Figure figure_4d(const FigureOptions& o) {
 Figure figure_5(const FigureOptions& o) {
   Figure f{"fig5",
            "Fig. 5: the exact solution Eq. (exactconv) (lines) vs RK4 (points), N = 30, gamma = 0, "
-           "f = tau; inset: phi_1 before the front reaches the wall",
+           "f = tau; inset: the small oscillation of phi_1 on its plateau",
            {}};
   const std::vector<int> springs = {1, kN};
   Panel p = time_panel(
@@ -158,14 +159,21 @@ Figure figure_5(const FigureOptions& o) {
                                    rk4.tau, rk4.phi[i]));
   fit_y(p);
   p.legend = Panel::Legend::BottomRight;
-  // The inset: phi_1 while only the dispersive precursor of the front has reached the wall
-  // (the continuum's phi_1 is exactly 0 until tau = N).
-  Panel inset = time_panel("inset: \u03C6\u2081 before the front arrives", 30.0, "\u03C6\u2081");
+  // The inset: the small oscillation of phi_1 about the plateau 4N of Eq. (phi1), where the
+  // discrete chain departs from the continuum and RK4 still follows the exact solution.
+  Panel inset = time_panel("inset: \u03C6\u2081 on its plateau", 150.0, "\u03C6\u2081");
+  inset.x.lo = 96.0;
+  inset.legend = Panel::Legend::BottomRight;
   inset.x.label = "";
   const std::vector<int> first = {1};
   const Trajectory small_exact =
-      exact_trajectory(kN, 0.0, unit_ramp(), first, linspace(0, 30, 601));
-  const Trajectory small_rk4 = rk4_trajectory(kN, 0.0, unit_ramp(), first, 30.0, 0.5, o.dt);
+      exact_trajectory(kN, 0.0, unit_ramp(), first, linspace(96, 150, 541));
+  Trajectory small_rk4 = rk4_trajectory(kN, 0.0, unit_ramp(), first, 150.0, 0.75, o.dt);
+  const auto from =
+      std::find_if(small_rk4.tau.begin(), small_rk4.tau.end(), [](double t) { return t >= 96.0; }) -
+      small_rk4.tau.begin();
+  small_rk4.tau.erase(small_rk4.tau.begin(), small_rk4.tau.begin() + from);
+  small_rk4.phi[0].erase(small_rk4.phi[0].begin(), small_rk4.phi[0].begin() + from);
   inset.series.push_back(make_series("\u03C6\u2081 exact (inset)", SeriesStyle::Line, kColours[0],
                                      small_exact.tau, small_exact.phi[0]));
   inset.series.push_back(make_series("\u03C6\u2081 RK4 (inset)", SeriesStyle::Points, kColours[0],
