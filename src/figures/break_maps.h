@@ -3,6 +3,7 @@
 // pulled one (N) and the others.
 #pragma once
 
+#include <atomic>
 #include <functional>
 #include <vector>
 
@@ -13,9 +14,10 @@
 namespace cb {
 
 // The first break found by RK4 with breaking (cb::Integrator, step dt), stopping there; none
-// before t_end: broke = false. Throws std::runtime_error when the state stops being finite.
+// before t_end (or before *stop became true): broke = false. Throws std::runtime_error when the
+// state stops being finite.
 FirstBreak simulated_first_break(const ChainParams& chain, const DriveDesc& drive, double t_end,
-                                 double dt);
+                                 double dt, const std::atomic<bool>* stop = nullptr);
 
 // fn(0) .. fn(count - 1) on `jobs` threads (0: all cores); results in index order.
 std::vector<FirstBreak> parallel_first_breaks(int count, int jobs,

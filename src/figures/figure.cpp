@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <utility>
 
 #include "figures/figure_specs.h"
@@ -47,6 +48,12 @@ Series make_series(std::string label, SeriesStyle style, FigureRgb colour, std::
   s.x = std::move(x);
   s.y = std::move(y);
   return s;
+}
+
+std::string fixed(double value, int decimals) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
+  return buffer;
 }
 
 void fit_y(Panel& panel, double pad) {

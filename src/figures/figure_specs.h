@@ -52,6 +52,8 @@ std::vector<double> linspace(double lo, double hi, int count);
 std::vector<double> logspace(double lo, double hi, int count);
 Series make_series(std::string label, SeriesStyle style, FigureRgb colour, std::vector<double> x,
                    std::vector<double> y);
+// value with `decimals` decimals (labels and notes).
+std::string fixed(double value, int decimals);
 // y from the smallest to the largest y of the panel's series, widened by `pad` of the span.
 void fit_y(Panel& panel, double pad = 0.05);
 // The series of `panel` called `label`; null when there is none.

@@ -37,12 +37,6 @@ void add_phi(Panel& p, const std::vector<int>& springs, const Trajectory& lines,
                                      kColours[i % 3], points->tau, points->phi[i]));
 }
 
-std::string fmt(const char* format, double a, double b = 0.0, double c = 0.0) {
-  char buffer[160];
-  std::snprintf(buffer, sizeof buffer, format, a, b, c);
-  return buffer;
-}
-
 }  // namespace
 
 Figure figure_4a(const FigureOptions& o) {
@@ -109,11 +103,10 @@ Figure figure_4c(const FigureOptions&) {
     const char* why = b.spring == kN
                           ? (zeta > 4 * kN ? "anomalous: spring N again" : "fast pull: spring N")
                           : "slow pull: near the wall";
-    p.notes.push_back(
-        {4.0, zeta + 7.0,
-         fmt("\u03B6_c = %.0f: spring %.0f breaks first at \u03C4 = %.1f", zeta, b.spring, b.tau) +
-             " (" + why + ")",
-         kFigVermillion});
+    p.notes.push_back({4.0, zeta + 7.0,
+                       "\u03B6_c = " + fixed(zeta, 0) + ": spring " + std::to_string(b.spring) +
+                           " breaks first at \u03C4 = " + fixed(b.tau, 1) + " (" + why + ")",
+                       kFigVermillion});
   }
   p.series.push_back(std::move(thresholds));
   p.y.lo = -5.0;

@@ -20,12 +20,6 @@ double spring_or_nan(const FirstBreak& b) {
   return b.broke ? b.spring : kNaN;
 }
 
-std::string fmt(const char* format, double value) {
-  char buffer[96];
-  std::snprintf(buffer, sizeof buffer, format, value);
-  return buffer;
-}
-
 }  // namespace
 
 Figure figure_breaking_map(const FigureOptions& o) {
@@ -95,7 +89,7 @@ Figure figure_breaking_map(const FigureOptions& o) {
     switches.y.push_back(kN + 1.3);
     const bool at_right = b.zeta > kMapZetaMax - 15.0;  // keep the label inside the plot
     p.notes.push_back(
-        {at_right ? b.zeta - 13.0 : b.zeta + 1.5, kN + 1.3, fmt("%.2f", b.zeta), kFigVermillion});
+        {at_right ? b.zeta - 13.0 : b.zeta + 1.5, kN + 1.3, fixed(b.zeta, 2), kFigVermillion});
   }
   p.series.push_back(std::move(switches));
   f.panels.push_back(std::move(p));
