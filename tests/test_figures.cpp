@@ -213,6 +213,22 @@ TEST_CASE("Figs. 3(c), 4(d), 5: RK4 points on the exact solution", "[figures]") 
   }
 }
 
+TEST_CASE("Fig. 4(d): with friction phi_1 ends below phi_N (the caption)", "[figures]") {
+  const cb::Figure& f = built_figure("fig4d");
+  const cb::Series& first = series_of(f, "\u03C6\u2081 exact");
+  const cb::Series& last = series_of(f, "\u03C6\u2083\u2080 exact");
+  int compared = 0;
+  for (std::size_t i = 0; i < first.x.size(); ++i)
+    if (first.x[i] >= 200.0) {
+      REQUIRE(first.y[i] < last.y[i]);
+      ++compared;
+    }
+  CHECK(compared > 100);
+  // Without friction the triangle wave of Eq. (phi1) takes phi_1 above phi_N there (tau = 4N
+  // + ... : phi_1 = 4N plateau ends at 5N, then 2 (tau - 3N) > tau until 6N).
+  CHECK(cb::continuum_phi1(30, 1.0, 170.0) > cb::continuum_phiN(1.0, 170.0));
+}
+
 TEST_CASE("Fig. 3: the continuum fields against independent forms", "[figures]") {
   // (b): the propagator against its defining sum, sum_n (-1)^n / N 2 sin(kappa tau) cos(kappa xi).
   const cb::Heatmap& h = built_figure("fig3b").panels[0].heatmap;

@@ -123,11 +123,11 @@ Figure figure_4d(const FigureOptions& o) {
   Panel p = time_panel(
       "Fig. 4(d)  friction \u03B3 = 0.01, \u03B2 = 1, N = 30: RK4 (points), "
       "exact (lines)",
-      600.0, "\u03C6\u2C7C");
+      300.0, "\u03C6\u2C7C");
   const std::vector<int> springs = {1, kN};
   const Trajectory exact =
-      exact_trajectory(kN, 0.01, unit_ramp(), springs, linspace(0.0, 600.0, 1201));
-  const Trajectory rk4 = rk4_trajectory(kN, 0.01, unit_ramp(), springs, 600.0, 6.0, o.dt);
+      exact_trajectory(kN, 0.01, unit_ramp(), springs, linspace(0.0, 300.0, 1201));
+  const Trajectory rk4 = rk4_trajectory(kN, 0.01, unit_ramp(), springs, 300.0, 3.0, o.dt);
   add_phi(p, springs, exact, "exact", &rk4, "\u03C6");
   fit_y(p);
   f.panels.push_back(std::move(p));
