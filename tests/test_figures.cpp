@@ -224,9 +224,11 @@ TEST_CASE("Fig. 4(d): with friction phi_1 ends below phi_N (the caption)", "[fig
       ++compared;
     }
   CHECK(compared > 100);
-  // Without friction the triangle wave of Eq. (phi1) takes phi_1 above phi_N there (tau = 4N
-  // + ... : phi_1 = 4N plateau ends at 5N, then 2 (tau - 3N) > tau until 6N).
-  CHECK(cb::continuum_phi1(30, 1.0, 170.0) > cb::continuum_phiN(1.0, 170.0));
+  // Without friction it is the other way round there: Eq. (phi1) gives phi_1 = 2 (tau - 3N)
+  // on 5N..7N, above phi_N = tau from 6N on (tau = 205: 230 > 205).
+  CHECK(cb::continuum_phi1(30, 1.0, 205.0) > cb::continuum_phiN(1.0, 205.0));
+  CHECK(cb::ExactChain(30, 0.0, ramp()).phi(1, 205.0) >
+        cb::ExactChain(30, 0.0, ramp()).phi(30, 205.0));
 }
 
 TEST_CASE("Fig. 3: the continuum fields against independent forms", "[figures]") {
