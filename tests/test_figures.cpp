@@ -246,6 +246,21 @@ TEST_CASE("Fig. 3: the continuum fields against independent forms", "[figures]")
       REQUIRE(h.values[static_cast<std::size_t>(r) * h.columns + c] ==
               Approx(sum).margin(1e-5));  // float storage
     }
+  // (d): Eq. (dg) sends each kick as a unit pulse at unit speed, flipping sign at the free
+  // end: the two meet at the middle spring at tau = 1.5 N with the same sign (the first one
+  // reflected off the wall, the second on its way in) and at tau = 2.5 N with opposite signs.
+  const cb::Heatmap& d = built_figure("fig3d").panels[0].heatmap;
+  const auto largest_near = [&](double xi, double tau) {
+    double m = 0.0;
+    for (int r = 0; r < d.rows; ++r)
+      for (int c = 0; c < d.columns; ++c)
+        if (std::abs(d.x_at(c) - xi) < 0.3 && std::abs(d.y_at(r) - tau) < 0.3)
+          m = std::max(m, std::abs(double(d.values[static_cast<std::size_t>(r) * d.columns + c])));
+    return m;
+  };
+  CHECK(largest_near(15.0, 45.0) > 1.5);  // constructive: ~2
+  CHECK(largest_near(15.0, 75.0) < 0.5);  // destructive: ~0
+  CHECK(largest_near(15.0, 15.0) > 0.7);  // a single pulse on its way in: ~1
   // (a): psi of a step is d/dtau of psi of a unit ramp, Eq. (example) (gamma = 0, N terms;
   // Eq. (example) keeps xi exactly where the N-term sum has its sine series: <= 0.1 inside).
   for (double xi : {5.0, 10.0, 20.0})
