@@ -134,7 +134,8 @@ int main(int argc, char** argv) {
   figures_cmd
       ->add_option("--jobs,-j", figures.jobs, "Threads for the RK4 maps (default: all cores)")
       ->check(CLI::NonNegativeNumber);
-  figures_cmd->add_option("--gl", figures.frame.gl, "OpenGL backend: auto, osmesa or egl");
+  figures_cmd->add_option("--gl", figures.frame.gl, "OpenGL backend: auto, osmesa or egl")
+      ->check(CLI::IsMember({"auto", "osmesa", "egl"}));
   figures_cmd->add_flag("--quiet,-q", figures.quiet, "No progress output");
 
   try {
