@@ -73,6 +73,22 @@ TEST_CASE("Breaking map N = 30, gamma = 0: spring N / not-N switches, by the exa
   }
 }
 
+TEST_CASE("Breaking map N = 30, gamma = 0.01: friction closes all but one wall-side window",
+          "[figures]") {
+  // The paper (Sec. III): friction diminishes the anomaly and makes the wall side hard to
+  // break. Up to zeta_c = 250 only one window of wall-side breaks is left, inside (2N, 4N).
+  const auto switches = cb::spring_n_boundaries(30, 0.01, 0.5, cb::kMapZetaMax, 250);
+  REQUIRE(switches.size() == 2);
+  CHECK(switches[0].zeta > 60.0);
+  CHECK(switches[1].zeta < 120.0);
+  for (std::size_t k = 0; k < 2; ++k)
+    for (double side : {-1e-6, 1e-6}) {
+      const cb::FirstBreak b = first_break_by_slope(switches[k].zeta * (1 + side), 0.01);
+      INFO("switch at " << switches[k].zeta << ", side " << side << ": spring " << b.spring);
+      CHECK((b.spring == 30) == ((side < 0) == (k == 0)));
+    }
+}
+
 TEST_CASE("Breaking map figure: exact and RK4 agree away from the switches, both gammas",
           "[figures]") {
   const cb::Figure& f = built_figure("breaking_map");

@@ -33,6 +33,7 @@ Figure figure_breaking_map(const FigureOptions& o) {
   p.x = axis("\u03B6_c = \u03C6_c / \u03B2   (small: a fast pull, large: a slow pull)", 0.0,
              kMapZetaMax);
   p.y = axis("spring", 0.0, kN + 6.0);  // room above spring N for the legend
+  for (int j : {1, 5, 10, 15, 20, 25, 30}) p.y.ticks.push_back({double(j), std::to_string(j)});
   // The continuum prediction at gamma = 0: spring N, or springs 1 .. last_spring together.
   const std::vector<double> fine = linspace(0.5, kMapZetaMax, 2000);
   Series pulled = make_series("continuum: spring N", SeriesStyle::Band, kFigGrey, fine, {});
@@ -81,17 +82,23 @@ Figure figure_breaking_map(const FigureOptions& o) {
     p.series.push_back(make_series(std::string("RK4 ") + c.name, SeriesStyle::Points, c.colour,
                                    coarse, std::move(spring)));
   }
-  // Where the exact map switches between spring N and the others (gamma = 0), marked above.
-  Series switches = make_series("exact N / not-N switch (\u03B3 = 0)", SeriesStyle::Points,
-                                kFigVermillion, {}, {});
-  for (const MapBoundary& b : spring_n_boundaries(kN, 0.0, 0.5, kMapZetaMax, 250)) {
-    switches.x.push_back(b.zeta);
-    switches.y.push_back(kN + 1.3);
-    const bool at_right = b.zeta > kMapZetaMax - 15.0;  // keep the label inside the plot
-    p.notes.push_back(
-        {at_right ? b.zeta - 13.0 : b.zeta + 1.5, kN + 1.3, fixed(b.zeta, 2), kFigVermillion});
+  // Where the exact map switches between spring N and the others, marked above spring N
+  // (gamma = 0 with its value, gamma = 0.01 in its colour a row higher).
+  for (const auto& c : cases) {
+    const double row = kN + (c.gamma == 0.0 ? 1.3 : 2.3);
+    Series switches =
+        make_series(std::string("exact N / not-N switch ") + c.name, SeriesStyle::Points,
+                    c.gamma == 0.0 ? kFigVermillion : c.colour, {}, {});
+    for (const MapBoundary& b : spring_n_boundaries(kN, c.gamma, 0.5, kMapZetaMax, 250)) {
+      switches.x.push_back(b.zeta);
+      switches.y.push_back(row);
+      const bool at_right = b.zeta > kMapZetaMax - 15.0;  // keep the label inside the plot
+      if (c.gamma == 0.0)
+        p.notes.push_back(
+            {at_right ? b.zeta - 13.0 : b.zeta + 1.5, row, fixed(b.zeta, 2), kFigVermillion});
+    }
+    p.series.push_back(std::move(switches));
   }
-  p.series.push_back(std::move(switches));
   f.panels.push_back(std::move(p));
   return f;
 }
