@@ -66,6 +66,7 @@ TEST_CASE("Figures GL: points and lines land on the pixels their data give", "[f
   inset.y = cb::axis("", 0.0, 1.0);
   inset.series.push_back(
       cb::make_series("dot", cb::SeriesStyle::Points, cb::kFigGreen, {0.3}, {0.5}));
+  inset.inset = true;
   inset.left = 0.6f;
   inset.top = 0.05f;
   inset.width = 0.35f;

@@ -85,8 +85,10 @@ struct Panel {
   Heatmap heatmap;
   std::vector<Note> notes;
   enum class Legend { TopLeft, BottomRight } legend = Legend::TopLeft;  // clear of the data
-  // Where the panel goes, as fractions of the figure (an inset is a small second panel).
+  // Where the panel goes, as fractions of the figure. An inset is a small later panel drawn
+  // over an earlier one, on its own background.
   float left = 0, top = 0, width = 1, height = 1;
+  bool inset = false;
 };
 
 struct Figure {

@@ -172,6 +172,7 @@ Figure figure_5(const FigureOptions& o) {
   inset.series.push_back(make_series("\u03C6\u2081 RK4 (inset)", SeriesStyle::Points, kColours[0],
                                      small_rk4.tau, small_rk4.phi[0]));
   fit_y(inset);
+  inset.inset = true;
   inset.left = 0.08f;
   inset.top = 0.10f;
   inset.width = 0.42f;

@@ -182,7 +182,7 @@ struct PanelDraw {
 
   void draw() const {
     const Box& a = l.mapping.area;
-    if (p.left > 0.0f) {  // an inset: cover what lies below it
+    if (p.inset) {  // cover what lies below it
       c.draw->AddRectFilled(ImVec2(l.box.x, l.box.y), ImVec2(l.box.right(), l.box.bottom()),
                             col(kOverlayBackground));
     }
