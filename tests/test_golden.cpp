@@ -1,7 +1,8 @@
 // Golden frames: whole scenes rendered at 480x270 and compared with the PNGs in tests/golden/
 // within a stated tolerance, on both backends. States come from the Integrator with the
 // scenes' parameters (no app process), except N = 1e5, which uses the continuum solution.
-// CHAINBREAK_UPDATE_GOLDENS=1 rewrites the goldens from OSMesa instead (tests/golden/README.md).
+// CHAINBREAK_UPDATE_GOLDENS=1 rewrites the goldens from OSMesa instead (tests/golden/README.md);
+// the tolerance is golden_support.h's.
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -12,6 +13,8 @@
 
 #include "drive/drive.h"
 #include "gl/gl_context.h"
+#include "gl_test_support.h"
+#include "golden_support.h"
 #include "output/image.h"
 #include "output/png_writer.h"
 #include "physics/integrator.h"
@@ -20,73 +23,8 @@
 
 namespace {
 
-namespace fs = std::filesystem;
-
-// The tolerance. Physics and snapshot are bit-reproducible (-ffp-contract=off) and llvmpipe
-// rasterises in fixed point, so on the machine that made them the frames match exactly, on
-// OSMesa and EGL alike. Another CPU changes the code llvmpipe generates (vector width, FMA),
-// which moves shading and antialiased edges by a step or two: allow 2 per channel
-// everywhere, and more on 0.1% of the pixels (130 of 480x270), where a vertex rounds to the
-// other side of a pixel centre. That catches a wrong colour map, a moved chain, panel or
-// label, a lost label or arrow; not one small bead (~50 px here): the exact-pixel tests in
-// test_render.cpp and the snapshot tests cover single shapes.
-constexpr int kChannelTolerance = 2;
-constexpr double kMaxFractionOver = 0.001;
+using cb::test::check_golden;
 constexpr int kWidth = 480, kHeight = 270;
-
-bool env_is_1(const char* name) {
-  const char* value = std::getenv(name);
-  return value != nullptr && std::string(value) == "1";
-}
-
-std::unique_ptr<cb::GlContext> create_or_skip(cb::GlBackend backend) {
-  try {
-    return cb::create_gl_context(backend);
-  } catch (const cb::GlError& error) {
-    if (env_is_1("CHAINBREAK_REQUIRE_GL")) FAIL("CHAINBREAK_REQUIRE_GL=1 but: " << error.what());
-    WARN("skipped, no " << cb::gl_backend_name(backend) << " context: " << error.what());
-    return nullptr;
-  }
-}
-
-fs::path golden_dir() {
-  return fs::path(__FILE__).parent_path() / "golden";
-}
-
-// Beside the test binary (build/tests/golden-actual), whatever the working directory.
-fs::path actual_dir() {
-  std::error_code error;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", error);
-  return (error ? fs::current_path() : exe.parent_path()) / "golden-actual";
-}
-
-// Compares with tests/golden/NAME.png; on failure writes the frame to golden-actual/ for a
-// human to look at. With CHAINBREAK_UPDATE_GOLDENS=1 the OSMesa frame becomes the golden.
-void check_golden(const std::string& name, cb::GlBackend backend, const cb::Image& actual) {
-  const fs::path golden = golden_dir() / (name + ".png");
-  if (env_is_1("CHAINBREAK_UPDATE_GOLDENS") && backend == cb::GlBackend::OSMesa) {
-    cb::write_png(golden.string(), actual);
-    WARN("wrote " << golden.string() << ": inspect it before committing");
-    return;
-  }
-  if (!fs::exists(golden))
-    FAIL(golden.string() << " is missing; make it with CHAINBREAK_UPDATE_GOLDENS=1 "
-                            "(tests/golden/README.md)");
-  const cb::ImageDiff d =
-      cb::compare_images(actual, cb::read_png(golden.string()), kChannelTolerance);
-  const bool ok = d.same_size && d.fraction_over <= kMaxFractionOver;
-  std::string written;
-  if (!ok) {
-    fs::create_directories(actual_dir());
-    written = (actual_dir() / (name + "." + cb::gl_backend_name(backend) + ".png")).string();
-    cb::write_png(written, actual);
-  }
-  INFO(name << " (" << cb::gl_backend_name(backend) << "): max channel difference " << d.max_channel
-            << ", " << 100.0 * d.fraction_over << "% of pixels over " << kChannelTolerance
-            << " (allowed " << 100.0 * kMaxFractionOver << "%)"
-            << (d.same_size ? "" : ", sizes differ") << (ok ? "" : "; actual frame: " + written));
-  CHECK(ok);
-}
 
 // The ranges the app's measure_run (src/app/frames.cpp) finds for a run: largest |psi|,
 // |f| and |phi| up to the first break, so the layout is the one `chainbreak snapshot` uses.
@@ -199,7 +137,7 @@ cb::RenderSnapshot ribbon_1e5() {
 TEST_CASE("Golden frames match within tolerance", "[golden]") {
   const cb::GlBackend backend = GENERATE(cb::GlBackend::OSMesa, cb::GlBackend::Egl);
   INFO("backend " << cb::gl_backend_name(backend));
-  auto context = create_or_skip(backend);
+  auto context = cb::test::create_or_skip(backend);
   if (!context) return;
   cb::Renderer renderer(kWidth, kHeight);
 

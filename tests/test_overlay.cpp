@@ -452,10 +452,7 @@ cb::Image draw(cb::Renderer& renderer, cb::Overlay* overlay, const cb::RenderSna
   return image;
 }
 
-int channel_distance(const cb::Image& image, int x, int y, const cb::OverlayRgb& c) {
-  const std::uint8_t* p = image.pixel(x, y);
-  return std::max({std::abs(p[0] - c.r), std::abs(p[1] - c.g), std::abs(p[2] - c.b)});
-}
+using cb::test::channel_distance;
 
 }  // namespace
 

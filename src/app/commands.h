@@ -65,4 +65,13 @@ struct RenderOptions {
 };
 int render_command(const RenderOptions& options);
 
+struct FiguresOptions {
+  std::string out_dir = "renders/figures";
+  std::string only;  // comma-separated figure names; empty: all
+  int jobs = 0;      // threads for the RK4 maps; 0: all cores
+  bool quiet = false;
+  FrameOptions frame;  // only .gl is used: the figures have a fixed size
+};
+int figures_command(const FiguresOptions& options);
+
 }  // namespace cb

@@ -126,6 +126,18 @@ int main(int argc, char** argv) {
       ->excludes(no_overlay);
   add_frame_options(render_cmd, render.frame);
 
+  cb::FiguresOptions figures;
+  auto* figures_cmd = app.add_subcommand(
+      "figures", "The paper's Figs. 3-5 and two breaking maps as PNG + CSV (numbers behind them)");
+  figures_cmd->add_option("-o,--out", figures.out_dir, "Folder (default renders/figures)");
+  figures_cmd->add_option("--only", figures.only, "Comma-separated names, e.g. fig4a,breaking_map");
+  figures_cmd
+      ->add_option("--jobs,-j", figures.jobs, "Threads for the RK4 maps (default: all cores)")
+      ->check(CLI::NonNegativeNumber);
+  figures_cmd->add_option("--gl", figures.frame.gl, "OpenGL backend: auto, osmesa or egl")
+      ->check(CLI::IsMember({"auto", "osmesa", "egl"}));
+  figures_cmd->add_flag("--quiet,-q", figures.quiet, "No progress output");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -147,6 +159,7 @@ int main(int argc, char** argv) {
       render.overrides = overrides;
       return cb::render_command(render);
     }
+    if (figures_cmd->parsed()) return cb::figures_command(figures);
     sweep.overrides = overrides;
     return cb::sweep_command(sweep);
   } catch (const cb::SceneError& e) {

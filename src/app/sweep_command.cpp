@@ -10,6 +10,7 @@
 #include "app/csv.h"
 #include "app/progress.h"
 #include "exact/first_break.h"
+#include "figures/break_maps.h"
 #include "output/output_file.h"
 #include "physics/integrator.h"
 
@@ -79,17 +80,12 @@ std::pair<int, int> parse_shard(const std::string& text, int count) {
 // The first break of one scene by RK4 (stopping at it) or by the exact solution.
 FirstBreak first_break_of(const SceneDesc& scene, const std::string& solver) {
   if (solver == "exact") return exact_first_break(scene.chain, scene.drive, scene.integrator.t_end);
-  Integrator sim(scene.chain, make_forcing(scene.drive), {scene.integrator.dt, 1});
-  const std::int64_t last = std::llround(scene.integrator.t_end / scene.integrator.dt);
-  while (sim.state().step < last && sim.state().breaks.empty() && !g_interrupted)
-    if (!sim.step()) throw std::runtime_error(scene.name + ": " + sim.error());
-  FirstBreak fb;
-  if (!sim.state().breaks.empty()) {
-    fb.broke = true;
-    fb.spring = sim.state().breaks.front().spring;
-    fb.tau = sim.state().breaks.front().tau;
+  try {
+    return simulated_first_break(scene.chain, scene.drive, scene.integrator.t_end,
+                                 scene.integrator.dt, &g_interrupted);
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(scene.name + ": " + e.what());
   }
-  return fb;
 }
 
 }  // namespace

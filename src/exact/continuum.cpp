@@ -2,6 +2,7 @@
 
 #include <cassert>
 #include <cmath>
+#include <complex>
 #include <numbers>
 
 namespace cb {
@@ -86,6 +87,21 @@ double continuum_phij(int N, double beta, int j, double tau) {
 // Eq. (phiN).
 double continuum_phiN(double beta, double tau) {
   return tau > 0.0 ? beta * tau : 0.0;
+}
+
+// Eqs. (green), (conv): each mode's Green's function integrated from 0 to tau in closed form.
+// Complex arithmetic covers under- and over-damped modes alike (s_n imaginary or real).
+double continuum_psi_step(int N, double gamma, double xi, double tau) {
+  using C = std::complex<double>;
+  double sum = 0.0;
+  for (int n = 0; n < N; ++n) {
+    const double kappa = (n + 0.5) * kPi / N;
+    const C s = std::sqrt(C(gamma * gamma - kappa * kappa, 0.0));
+    const C up = -gamma + s, down = -gamma - s;
+    const C integral = (std::exp(up * tau) - 1.0) / up - (std::exp(down * tau) - 1.0) / down;
+    sum += sign_of_power(n) / N * (integral / s).real() * std::sin(kappa * xi);
+  }
+  return sum;
 }
 
 }  // namespace cb

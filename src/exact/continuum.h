@@ -23,4 +23,10 @@ double continuum_phi1(int N, double beta, double tau);
 double continuum_phij(int N, double beta, int j, double tau);
 double continuum_phiN(double beta, double tau);
 
+// Eqs. (green) and (conv) for a unit step f = u(tau) with friction gamma: the N-term sum
+// psi(xi, tau) = sum_n (-1)^n / (N s_n) [(e^{eta+ tau} - 1) / eta+ - (e^{eta- tau} - 1) / eta-]
+// sin(kappa_n xi), s_n = sqrt(gamma^2 - kappa_n^2), eta+- = -gamma +- s_n (Fig. 3(a)). As
+// tau -> infinity it tends to the particular solution xi (a quarter-wave sine series of xi).
+double continuum_psi_step(int N, double gamma, double xi, double tau);
+
 }  // namespace cb

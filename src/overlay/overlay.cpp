@@ -28,33 +28,6 @@ namespace {
 
 using namespace overlay_detail;
 
-// Glyphs the overlay writes, and no more (a small atlas samples faster): ASCII, the middle
-// dot, superscript digits and the times sign, the Greek letters, the prime, sub- and
-// superscripts, the arrow, minus and square root, and the subscript j. ImGui keeps the pointer
-// until the atlas is built, so it is static.
-constexpr ImWchar kGlyphRanges[] = {0x0020, 0x007E, 0x00B2, 0x00B3, 0x00B7, 0x00B7, 0x00B9,
-                                    0x00B9, 0x00D7, 0x00D7, 0x0391, 0x03C9, 0x2032, 0x2032,
-                                    0x2070, 0x209C, 0x2192, 0x2192, 0x2212, 0x2212, 0x221A,
-                                    0x221A, 0x2C7C, 0x2C7C, 0};
-
-ImFont* load_font(ImFontAtlas& atlas, const char* file, float size) {
-  const char* dir = std::getenv("CHAINBREAK_FONT_DIR");
-  const std::string path =
-      (std::filesystem::path(dir && *dir ? dir : kOverlayFontDir) / file).string();
-  // Checked here: ImGui would only assert (or return null) on a missing file.
-  if (!std::filesystem::is_regular_file(path))
-    throw std::runtime_error("the overlay's font " + path +
-                             " is missing: install the package fonts-dejavu-core " +
-                             "(apt-get install fonts-dejavu-core), or render with --no-overlay");
-  ImFontConfig config;
-  // Glyphs on whole pixels, rasterised once at their size: crisp, and a third of the atlas.
-  config.OversampleH = 1;
-  config.PixelSnapH = true;
-  ImFont* font = atlas.AddFontFromFileTTF(path.c_str(), size, &config, kGlyphRanges);
-  if (!font) throw std::runtime_error("Dear ImGui could not load the font " + path);
-  return font;
-}
-
 // A texture with a framebuffer around it: a source for glBlitFramebuffer.
 struct Target {
   GLuint texture = 0, framebuffer = 0;
@@ -195,29 +168,8 @@ Overlay::Overlay(int width, int height, double fps, const OverlaySwitches& switc
   im.context = ImGui::CreateContext();
   Impl::Current current(im.context);
   ImGuiIO& io = ImGui::GetIO();
-  io.IniFilename = nullptr;  // no imgui.ini written into the user's folder
-  io.LogFilename = nullptr;
-  io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
-  io.DeltaTime = im.delta_time;
-  const float size = im.layout.font_px;
-  im.fonts.sans = load_font(*io.Fonts, "DejaVuSans.ttf", size);
-  im.fonts.bold = load_font(*io.Fonts, "DejaVuSans-Bold.ttf", size);
-  im.fonts.mono = load_font(*io.Fonts, "DejaVuSansMono.ttf", size);
-  // The RK4 points' disc, baked into the atlas before the backend uploads it (the atlas is
-  // converted to RGBA from this alpha channel on first use).
-  const float radius = std::max(2.0f, 0.2f * size);
-  const int side = static_cast<int>(std::ceil(2.0f * radius)) + 2;
-  const int rect_index = io.Fonts->AddCustomRectRegular(side, side);
-  io.Fonts->Build();
-  unsigned char* alpha = nullptr;
-  int atlas_w = 0, atlas_h = 0;
-  io.Fonts->GetTexDataAsAlpha8(&alpha, &atlas_w, &atlas_h);
-  const ImFontAtlasCustomRect* rect = io.Fonts->GetCustomRectByIndex(rect_index);
-  for (int y = 0; y < side; ++y)
-    for (int x = 0; x < side; ++x)
-      alpha[(rect->Y + y) * atlas_w + rect->X + x] = marker_coverage(x, y, side, radius);
-  io.Fonts->CalcCustomRectUV(rect, &im.marker.uv0, &im.marker.uv1);
-  im.marker.size = static_cast<float>(side);
+  configure_headless_io(io, static_cast<float>(width), static_cast<float>(height), im.delta_time);
+  im.fonts = load_fonts(*io.Fonts, im.layout.font_px, im.marker);
   if (!ImGui_ImplOpenGL3_Init("#version 330"))
     throw std::runtime_error("Dear ImGui's OpenGL3 backend did not start");
   im.backend = true;

@@ -26,6 +26,13 @@ struct Marker {
   float size = 0;  // the quad's side, pixels (the disc's diameter plus its antialiased rim)
 };
 
+// Dear ImGui without a platform: no ini or log file, a fixed display size and time step.
+void configure_headless_io(ImGuiIO& io, float width, float height, float delta_time);
+// DejaVu Sans, Sans Bold and Sans Mono at `size` pixels (kOverlayFontDir or
+// $CHAINBREAK_FONT_DIR; std::runtime_error naming the package when missing), and the marker
+// disc baked into the same atlas (its texture is set once the backend has uploaded the atlas).
+Fonts load_fonts(ImFontAtlas& atlas, float size, Marker& marker);
+
 // The overlay is drawn in two passes. The still parts (panel outlines, titles, axes, grids,
 // tick labels, legends, the HUD's labels) change only with the axes: they are drawn once into
 // a texture and copied into every frame, a copy costing llvmpipe a fraction of drawing them.

@@ -170,23 +170,26 @@ void axes(Canvas& c, const Box& box, const PlotMapping& m, const Ticks& xt, cons
   const float fs = c.layout.font_px;
   const Box& a = m.area;
   const TickFormat yf = tick_format(yt);
-  for (double v : yt.values) {
+  for (std::size_t i = 0; i < yt.values.size(); ++i) {
+    const double v = yt.values[i];
     const float y = std::round(m.py(v)) + 0.5f;
     if (grid) c.draw->AddLine(ImVec2(a.x, y), ImVec2(a.right(), y), col(kGrid), 1.0f);
-    text(c, c.fonts.mono, a.x - 0.3f * fs, y - 0.55f * fs, kDim, tick_label(v, yf), 1.0f, 0.85f);
+    const std::string label = yt.labels.empty() ? tick_label(v, yf) : yt.labels[i];
+    text(c, c.fonts.mono, a.x - 0.3f * fs, y - 0.55f * fs, kDim, label, 1.0f, 0.85f);
   }
-  for (double v : xt.values) {
+  for (std::size_t i = 0; i < xt.values.size(); ++i) {
+    const double v = xt.values[i];
     const float x = std::round(m.px(v)) + 0.5f;
     if (grid) c.draw->AddLine(ImVec2(x, a.y), ImVec2(x, a.bottom()), col(kGrid), 1.0f);
     // The last label may not run past the panel: right-align it at the edge.
-    const std::string label = x_tick_label(v, xt);
+    const std::string label = xt.labels.empty() ? x_tick_label(v, xt) : xt.labels[i];
     const float w = text_width(c.fonts.mono, 0.85f * fs, label);
     const float align = x + 0.5f * w > a.right() + 0.5f * fs ? 1.0f : 0.5f;
     text(c, c.fonts.mono, x, a.bottom() + 0.2f * fs, kDim, label, align, 0.85f);
   }
   c.draw->AddRect(ImVec2(a.x, a.y), ImVec2(a.right(), a.bottom()), col(kFrame), 0.0f, 0, 1.0f);
   text(c, c.fonts.sans, box.x + 0.45f * fs, a.bottom() + 0.2f * fs, kDim, x_name, 0.0f, 0.85f);
-  if (yf.exponent != 0) {  // "×10⁻³" above the y labels
+  if (yf.exponent != 0 && yt.labels.empty()) {  // "×10⁻³" above the y labels
     std::string e = "\u00D710";
     for (char ch : std::to_string(yf.exponent)) {
       static const char* const kSup[10] = {"\u2070", "\u00B9", "\u00B2", "\u00B3", "\u2074",

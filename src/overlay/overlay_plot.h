@@ -38,6 +38,7 @@ float text_sub(Canvas& c, ImFont* font, float x, float y, const OverlayRgb& colo
 struct Ticks {
   std::vector<double> values;
   double step = 1.0;
+  std::vector<std::string> labels;  // one per value; empty: the values, formatted
 };
 Ticks nice_ticks(double lo, double hi, int count);
 

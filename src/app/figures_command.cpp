@@ -1,0 +1,88 @@
+// `chainbreak figures`: the paper's Figs. 3-5 and two breaking maps as PNG + CSV.
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <set>
+
+#include "app/commands.h"
+#include "app/figure_csv.h"
+#include "app/figure_image.h"
+#include "app/progress.h"
+#include "figures/figure_specs.h"
+#include "output/frame_writer.h"
+#include "output/output_file.h"
+#include "output/png_writer.h"
+
+namespace cb {
+
+namespace {
+
+// --only fig4a,breaking_map: the names, checked against the list.
+std::set<std::string> parse_only(const std::string& text) {
+  std::set<std::string> names;
+  std::string known;
+  for (const FigureEntry& e : figure_entries()) known += (known.empty() ? "" : ", ") + e.name;
+  std::size_t start = 0;
+  while (!text.empty() && start <= text.size()) {
+    const auto end = std::min(text.find(',', start), text.size());
+    const std::string name = text.substr(start, end - start);
+    bool found = false;
+    for (const FigureEntry& e : figure_entries()) found = found || e.name == name;
+    if (!found) throw SceneError("--only " + text + ": no figure '" + name + "'; known: " + known);
+    names.insert(name);
+    start = end + 1;
+  }
+  return names;
+}
+
+void make_output_dir(const std::string& dir) {
+  std::error_code error;
+  std::filesystem::create_directories(dir, error);
+  if (error)
+    throw OutputError("cannot create the folder " + dir + " (" + error.message() +
+                      "): choose another with -o DIR");
+  require_writable_dir(dir);
+}
+
+}  // namespace
+
+int figures_command(const FiguresOptions& o) {
+  const std::set<std::string> only = parse_only(o.only);
+  make_output_dir(o.out_dir);
+  // GL first: a machine without it fails at once, not after the computing.
+  Canvas canvas = make_canvas(o.frame, kFigureWidth, kFigureHeight);
+  FigureDrawer drawer(kFigureWidth, kFigureHeight);
+  FigureOptions options;
+  options.jobs = o.jobs;
+  const auto start = std::chrono::steady_clock::now();
+  int done = 0;
+  const int total =
+      only.empty() ? static_cast<int>(figure_entries().size()) : static_cast<int>(only.size());
+  {
+    Progress progress("figures", total, o.quiet, "figures");
+    for (const FigureEntry& entry : figure_entries()) {
+      if (!only.empty() && !only.count(entry.name)) continue;
+      if (g_interrupted) {
+        std::fprintf(stderr, "chainbreak: interrupted after %d of %d figures\n", done, total);
+        return 130;
+      }
+      const Figure figure = entry.build(options);
+      const std::filesystem::path stem = std::filesystem::path(o.out_dir) / entry.name;
+      write_png(stem.string() + ".png", figure_image(*canvas.renderer, drawer, figure));
+      OutputFile csv(stem.string() + ".csv");
+      csv.write(figure_csv(figure));
+      csv.commit();
+      std::printf("%s.png\n%s.csv\n", stem.c_str(), stem.c_str());
+      std::fflush(stdout);
+      progress.update(++done);
+    }
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!o.quiet)
+    std::fprintf(stderr, "figures: %d figures (PNG %dx%d + CSV) written to %s in %.1f s\n", done,
+                 kFigureWidth, kFigureHeight, o.out_dir.c_str(), seconds);
+  return 0;
+}
+
+}  // namespace cb

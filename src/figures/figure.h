@@ -1,0 +1,100 @@
+// A figure as plain data: panels of series over axes, with no GL. Built by figure_specs.h
+// (the paper's Figs. 3-5 and two maps of which part breaks), drawn by the overlay's plotting
+// code (overlay/figure_drawing.h), written as CSV by the app: one struct, three consumers, so
+// the PNG and its CSV cannot disagree.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace cb {
+
+struct FigureRgb {
+  std::uint8_t r = 0, g = 0, b = 0;
+};
+
+// Okabe-Ito colours (distinct for colour-blind readers), as the overlay's series use them.
+inline constexpr FigureRgb kFigSkyBlue{86, 180, 233};
+inline constexpr FigureRgb kFigGreen{0, 158, 115};
+inline constexpr FigureRgb kFigOrange{230, 159, 0};
+inline constexpr FigureRgb kFigVermillion{213, 94, 0};
+inline constexpr FigureRgb kFigPurple{204, 121, 167};
+inline constexpr FigureRgb kFigYellow{240, 228, 66};
+inline constexpr FigureRgb kFigGrey{150, 153, 160};
+inline constexpr FigureRgb kFigWhite{236, 236, 240};
+
+enum class SeriesStyle {
+  Line,    // a polyline through (x[i], y[i]); NaN in y breaks it
+  Points,  // a dot at each (x[i], y[i])
+  Band,    // filled between y[i] and y2[i] over x (translucent)
+  XSpans,  // shaded columns x[i] .. x2[i], the whole height (translucent)
+  VLines,  // dashed vertical lines at x[i]
+  HLines,  // dashed horizontal lines at y[i]
+};
+const char* series_style_name(SeriesStyle style);
+
+struct Series {
+  std::string label;  // the legend entry and the CSV's series name; empty: no legend entry
+  SeriesStyle style = SeriesStyle::Line;
+  FigureRgb colour = kFigWhite;
+  std::vector<double> x, y;
+  std::vector<double> x2, y2;  // XSpans: right edges; Band: upper edges
+};
+
+// A scalar field over a grid of cells: value(column, row) = values[row * columns + column],
+// column 0 at x_lo, row 0 at y_lo. Coloured by the chain's strain colour map at value / scale.
+struct Heatmap {
+  int columns = 0, rows = 0;
+  double x_lo = 0, x_hi = 1, y_lo = 0, y_hi = 1;
+  std::vector<float> values;
+  double scale = 1.0;
+  std::string label;  // what the colour bar shows
+  bool empty() const { return columns == 0 || rows == 0; }
+  double x_at(int column) const { return x_lo + (column + 0.5) * (x_hi - x_lo) / columns; }
+  double y_at(int row) const { return y_lo + (row + 0.5) * (y_hi - y_lo) / rows; }
+};
+
+struct AxisTick {
+  double value = 0;
+  std::string label;
+};
+
+struct Axis {
+  std::string label;
+  double lo = 0, hi = 1;
+  bool log = false;             // log10 scale (lo > 0)
+  std::vector<AxisTick> ticks;  // empty: round numbers chosen by the drawer
+};
+inline Axis axis(std::string label, double lo, double hi, bool log = false) {
+  return Axis{std::move(label), lo, hi, log, {}};
+}
+
+// Text at a data point (the left end of the text at x, its vertical middle at y).
+struct Note {
+  double x = 0, y = 0;
+  std::string text;
+  FigureRgb colour = kFigWhite;
+};
+
+struct Panel {
+  std::string title;
+  Axis x, y;
+  std::vector<Series> series;  // drawn in order, after the heatmap
+  Heatmap heatmap;
+  std::vector<Note> notes;
+  enum class Legend { TopLeft, BottomRight } legend = Legend::TopLeft;  // clear of the data
+  // Where the panel goes, as fractions of the figure. An inset is a small later panel drawn
+  // over an earlier one, on its own background.
+  float left = 0, top = 0, width = 1, height = 1;
+  bool inset = false;
+};
+
+struct Figure {
+  std::string name;     // file stem: fig4a -> fig4a.png, fig4a.csv
+  std::string caption;  // one line: what it shows and with which parameters
+  std::vector<Panel> panels;
+};
+
+}  // namespace cb
