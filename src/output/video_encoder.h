@@ -52,7 +52,7 @@ struct VideoSettings {
   // thread count, so a fixed number keeps files identical from machine to machine (on 2
   // vCPUs, 3 threads were no faster). Larger values help on bigger machines.
   int threads = 0;
-  int queue = 3;  // frames waiting for the encoder (each 8 MB at 1080p)
+  int queue = 3;  // frames waiting for the encoder (1080p: 8 MB as RGBA, 3 MB as Y'CbCr)
 };
 
 class VideoEncoder : public FrameSink {
