@@ -20,6 +20,8 @@
 //   Counters: frames/s of each, their ratio, busy cores of each (CPU time / wall time), and
 //   "others": cores busy with other processes meanwhile (/proc/stat minus ours), which
 //   flags a repetition measured on a shared machine.
+// - BM_EncodeReady/preset: libx264 alone on the same pictures already in Y'CbCr (no
+//   conversion on the clock): the encoder's own ceiling.
 // - BM_Convert: the conversion to yuv420p alone, on one thread: where the time goes.
 #include <benchmark/benchmark.h>
 #include <fcntl.h>
@@ -235,6 +237,58 @@ double encode_alone(const char* preset, double& convert) {
   return seconds_since(start);
 }
 
+// The encoder alone on pictures already in Y'CbCr (converted before the clock starts, by
+// output/yuv420.h as `render` does), handed over without a copy as `render` hands them:
+// the ceiling for any pipeline that feeds libx264 at this preset.
+double encode_ready(const char* preset) {
+  static std::vector<cb::Yuv420Image> ready;
+  if (ready.empty())
+    for (const cb::Image& image : g_frames) {
+      ready.emplace_back();
+      cb::rgba_to_yuv420({image.rgba.data(), image.width, image.height, image.width * 4, false},
+                         image.width, image.height, ready.back());
+    }
+  const auto start = Clock::now();
+  X264 x;
+  if (!open_x264(x, ready.front().width, ready.front().height, 60, preset)) return -1;
+  AVFrame* lent = av_frame_alloc();
+  for (int k = 0; k < kFrames; ++k) {
+    cb::Yuv420Image& p = ready[k];
+    av_frame_unref(lent);
+    lent->buf[0] = av_buffer_create(
+        p.bytes.data(), p.bytes.size(), [](void*, std::uint8_t*) {}, nullptr, 0);
+    lent->format = AV_PIX_FMT_YUV420P;
+    lent->width = p.width;
+    lent->height = p.height;
+    for (int c = 0; c < 3; ++c) {
+      lent->data[c] = p.plane(c);
+      lent->linesize[c] = c == 0 ? p.luma_stride : p.chroma_stride();
+    }
+    lent->pts = k;
+    if (avcodec_send_frame(x.codec, lent) < 0 || !x.drain()) {
+      av_frame_free(&lent);
+      return -1;
+    }
+  }
+  av_frame_free(&lent);
+  if (avcodec_send_frame(x.codec, nullptr) < 0 || !x.drain()) return -1;
+  return seconds_since(start);
+}
+
+void BM_EncodeReady(benchmark::State& state) {
+  const char* preset = kPresets[state.range(0)];
+  state.SetLabel(preset);
+  if (g_frames.empty()) return state.SkipWithError(g_clip_error.c_str());
+  double seconds = -1;
+  for (auto _ : state) {
+    seconds = encode_ready(preset);
+    if (seconds < 0) return state.SkipWithError("libx264 failed");
+    state.SetIterationTime(seconds);
+  }
+  state.counters["fps"] = kFrames / seconds;
+  g_values["ready/" + std::string(preset)].push_back(kFrames / seconds);
+}
+
 // ---- conversion alone ------------------------------------------------------------------------
 
 // RGBA -> yuv420p on one thread, no encoder: 0 swscale with the encoder's flags (accurate
@@ -350,6 +404,7 @@ void common(benchmark::internal::Benchmark* b) {
 }
 BENCHMARK(BM_Convert)->DenseRange(0, 2)->Apply(common);
 BENCHMARK(BM_Video)->DenseRange(0, 2)->Apply(common);
+BENCHMARK(BM_EncodeReady)->DenseRange(0, 2)->Apply(common);
 
 double median(std::vector<double> v) {
   if (v.empty()) return 0.0;
@@ -378,6 +433,10 @@ void print_summary() {
     std::printf("%-10s %8.1f %8.1f %8.3f %11.1f %11.1f %8.2f\n", p.c_str(), m("x264/" + p),
                 m("render/" + p), m("ratio/" + p), 1e3 * m("x264_cpu/" + p),
                 1e3 * m("render_cpu/" + p), m("others/" + p));
+  std::printf("libx264 on ready Y'CbCr (no conversion), frames/s, and render against it:\n");
+  for (const std::string p : kPresets)
+    std::printf("%-10s %8.1f %8.3f\n", p.c_str(), m("ready/" + p),
+                m("render/" + p) / m("ready/" + p));
 }
 
 }  // namespace
