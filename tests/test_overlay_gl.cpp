@@ -41,50 +41,6 @@ namespace {
 
 // A frame of the default scene's chain (N = 30, ramp 0.02, phi_c = 3) at frame `k` of a
 // 0.5-tau-per-frame video, its overlay recorded over frames 0..k.
-struct Video {
-  int width, height;
-  cb::ChainParams params = chain(30, 3.0);
-  cb::DriveDesc drive = ramp(0.02);
-  cb::SnapshotStyle style;
-  cb::OverlayLayout layout;
-
-  Video(int w, int h) : width(w), height(h) {
-    layout = cb::overlay_layout(w, h, cb::OverlaySwitches{});
-    style.width = w;
-    style.height = h;
-    style.psi_range = 8.0;
-    style.force_range = 3.5;
-    style.threshold = 3.0;
-    style.strain_range = 3.0;
-    style.chain_height = layout.chain_height;
-  }
-  // `record_ms`: the time spent recording and sharing the overlay's data, per frame.
-  std::vector<cb::RenderSnapshot> frames(int count, double* record_ms = nullptr) const {
-    cb::OverlaySetup setup;
-    setup.title = "Anomalous breaking";
-    setup.tau_per_frame = 0.5;
-    setup.tau_end = 0.5 * (count - 1);
-    setup.phi_max = 3.0;
-    setup.energy_max = 5e-3;
-    setup.strain_scale = 3.0;
-    cb::OverlayHistory history(params, drive, setup);
-    cb::Integrator sim(params, cb::make_forcing(drive), {0.01, 1});
-    std::vector<cb::RenderSnapshot> out;
-    std::chrono::steady_clock::duration recording{};
-    for (int k = 0; k < count; ++k) {
-      REQUIRE(sim.advance_to(50 * k));
-      out.push_back(cb::build_snapshot(sim.state(), params, sim.force_now(), style));
-      const auto start = std::chrono::steady_clock::now();
-      history.record(k, sim.state(), sim.force_now());
-      out.back().overlay = history.share();
-      recording += std::chrono::steady_clock::now() - start;
-    }
-    if (record_ms)
-      *record_ms = std::chrono::duration<double, std::milli>(recording).count() / count;
-    return out;
-  }
-};
-
 cb::Image draw(cb::Renderer& renderer, cb::Overlay* overlay, const cb::RenderSnapshot& snap) {
   renderer.draw(snap);
   if (overlay) overlay->draw(snap);
@@ -280,48 +236,3 @@ TEST_CASE("render --no-overlay draws the chain alone, exactly as without the ove
 // The overlay's cost at 1080p: median frame time (draw + read back) of 50 frames of the default
 // scene, with and without the overlay, and the producer's recording per frame. Not a check:
 // run by hand, `chainbreak_tests "[.overlay_cost]"`.
-TEST_CASE("Overlay cost at 1080p", "[.overlay_cost]") {
-  auto context = cb::test::create_or_skip(cb::GlBackend::Auto);
-  if (!context) return;
-  const Video video(1920, 1080);
-  using Clock = std::chrono::steady_clock;
-  double record_ms = 0.0;
-  const auto frames = video.frames(340, &record_ms);  // to tau 169.5, past the first break
-  cb::Renderer renderer(1920, 1080);
-  cb::Overlay overlay(1920, 1080, 60.0, cb::OverlaySwitches{});
-  // Interleaved, so that both see the same load (other processes share the cores). Wall
-  // time, and the process's CPU time (llvmpipe rasterises on its own threads), which other
-  // processes disturb less.
-  std::vector<double> wall[2], cpu[2];
-  const auto cpu_ms = [] {
-    timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
-  };
-  const auto time_frame = [&](cb::Overlay* o, const cb::RenderSnapshot& snap, int k) {
-    const double c0 = cpu_ms();
-    const auto start = Clock::now();
-    draw(renderer, o, snap);
-    wall[k].push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
-    cpu[k].push_back(cpu_ms() - c0);
-  };
-  for (int i = 0; i < 5; ++i) time_frame(&overlay, frames[i], 1);  // warm up: atlas, textures
-  wall[1].clear();
-  cpu[1].clear();
-  for (int i = 0; i < 50; ++i) {
-    const cb::RenderSnapshot& snap = frames[frames.size() - 50 + i];
-    time_frame(nullptr, snap, 0);
-    time_frame(&overlay, snap, 1);
-  }
-  const auto median = [](std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-  };
-  const double a = median(wall[0]), b = median(wall[1]);
-  const double ca = median(cpu[0]), cb_ = median(cpu[1]);
-  std::printf(
-      "1080p frame (draw + read), median of 50: wall %.2f ms without overlay, %.2f ms "
-      "with (+%.2f ms); CPU %.2f ms without, %.2f ms with (+%.2f ms); recording the "
-      "overlay's data: %.3f ms per frame (physics thread)\n",
-      a, b, b - a, ca, cb_, cb_ - ca, record_ms);
-}

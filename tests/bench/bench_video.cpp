@@ -23,6 +23,8 @@
 // - BM_EncodeReady/preset: libx264 alone on the same pictures already in Y'CbCr (no
 //   conversion on the clock): the encoder's own ceiling.
 // - BM_Convert: the conversion to yuv420p alone, on one thread: where the time goes.
+// - BM_OverlayShare: render with and without its overlay (default preset): the overlay's
+//   share of the frame time.
 #include <benchmark/benchmark.h>
 #include <fcntl.h>
 #include <spawn.h>
@@ -396,6 +398,37 @@ void BM_Video(benchmark::State& state) {
   g_values["others/" + p].push_back(std::max(alone.others, render.others));
 }
 
+// The overlay's share of `render`'s frame time (issue goal: <= 15 %): the same clip at the
+// default preset with and without it (--no-overlay), as pairs in alternating order.
+void BM_OverlayShare(benchmark::State& state) {
+  if (g_frames.empty()) return state.SkipWithError(g_clip_error.c_str());
+  const fs::path dir = fs::path("/dev/shm") / ("bench_video-ov-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string out = (dir / "clip.mp4").string();
+  static int pairs = 0;
+  double with = -1, without = -1;
+  for (auto _ : state) {
+    for (int half = 0; half < 2; ++half) {
+      std::vector<std::string> args = {"render", scene_path(), "-o",     out,
+                                       "--set",  kClipEnd,     "--quiet"};
+      const bool overlay = (half + pairs) % 2 == 0;
+      if (!overlay) args.push_back("--no-overlay");
+      (overlay ? with : without) = run_chainbreak(args);
+    }
+    ++pairs;
+    if (with < 0 || without < 0) break;
+    state.SetIterationTime(with + without);
+  }
+  fs::remove_all(dir);
+  if (with < 0 || without < 0) return state.SkipWithError("chainbreak render failed");
+  state.counters["fps_with"] = kFrames / with;
+  state.counters["fps_without"] = kFrames / without;
+  state.counters["share"] = 1.0 - without / with;  // of the frame time with the overlay
+  g_values["overlay/with"].push_back(kFrames / with);
+  g_values["overlay/without"].push_back(kFrames / without);
+  g_values["overlay/share"].push_back(1.0 - without / with);
+}
+
 // One iteration is a whole clip (BM_Video: a pair of them), in seconds of wall time: x264's
 // threads and the render process are not the benchmark thread. Repetitions interleave at
 // random (main).
@@ -405,6 +438,7 @@ void common(benchmark::internal::Benchmark* b) {
 BENCHMARK(BM_Convert)->DenseRange(0, 2)->Apply(common);
 BENCHMARK(BM_Video)->DenseRange(0, 2)->Apply(common);
 BENCHMARK(BM_EncodeReady)->DenseRange(0, 2)->Apply(common);
+BENCHMARK(BM_OverlayShare)->Apply(common);
 
 double median(std::vector<double> v) {
   if (v.empty()) return 0.0;
@@ -433,6 +467,10 @@ void print_summary() {
     std::printf("%-10s %8.1f %8.1f %8.3f %11.1f %11.1f %8.2f\n", p.c_str(), m("x264/" + p),
                 m("render/" + p), m("ratio/" + p), 1e3 * m("x264_cpu/" + p),
                 1e3 * m("render_cpu/" + p), m("others/" + p));
+  std::printf(
+      "render at veryfast: %.1f frames/s with the overlay, %.1f without: the overlay "
+      "takes %.1f %% of the frame time\n",
+      m("overlay/with"), m("overlay/without"), 100.0 * m("overlay/share"));
   std::printf("libx264 on ready Y'CbCr (no conversion), frames/s, and render against it:\n");
   for (const std::string p : kPresets)
     std::printf("%-10s %8.1f %8.3f\n", p.c_str(), m("ready/" + p),
