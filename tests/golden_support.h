@@ -1,4 +1,4 @@
-// Shared by the golden tests (test_golden.cpp: frames; test_figures_golden.cpp: figures): an
+// Shared by the golden tests (test_golden.cpp: frames; test_figures_gl.cpp: figures): an
 // image compared with tests/golden/<name>.png within the stated tolerance, or written there
 // on purpose with CHAINBREAK_UPDATE_GOLDENS=1 (tests/golden/README.md).
 #pragma once

@@ -108,6 +108,7 @@ TEST_CASE("render MP4: H.264 yuv420p, exact timing, moov first, a sidecar", "[re
   CHECK(d.frame_rate.den == 1);
   CHECK(d.duration == Approx(frames / 30.0).margin(1e-9));  // time base 1/30 in 1/15360 units
   CHECK(d.colorspace == AVCOL_SPC_BT709);
+  CHECK(d.chroma_location == AVCHROMA_LOC_CENTER);  // 2x2 means: centred chroma, tagged
   const auto boxes = cb::test::top_level_boxes(cb::test::read_bytes(mp4));
   const auto moov = std::find(boxes.begin(), boxes.end(), "moov");
   const auto mdat = std::find(boxes.begin(), boxes.end(), "mdat");

@@ -78,6 +78,7 @@ Decoded decode(const std::string& path, int keep) {
     while (avcodec_receive_frame(dec.get(), frame.get()) == 0) {
       out.width = frame->width, out.height = frame->height;
       out.colorspace = frame->colorspace;
+      out.chroma_location = frame->chroma_location;
       if (out.frames++ == keep) out.picture = to_rgba(*frame);
     }
   };

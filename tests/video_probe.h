@@ -22,6 +22,7 @@ struct Decoded {
   AVRational frame_rate{0, 1};  // the stream's average frame rate
   double duration = 0;          // seconds, from the stream (else the container)
   AVColorSpace colorspace = AVCOL_SPC_UNSPECIFIED;
+  AVChromaLocation chroma_location = AVCHROMA_LOC_UNSPECIFIED;  // as the stream tags it
   Image picture;  // frame `keep` (in presentation order) as RGBA; empty if there is none
 };
 

@@ -26,7 +26,7 @@ class FrameSink {
   virtual ~FrameSink() = default;
   virtual void push(Image image) = 0;  // frames arrive in order
   // A sink that encodes Y'CbCr 4:2:0 (video) says at which size it takes it; the caller may
-  // then convert each frame itself (e.g. on the GPU) and push_yuv420 it instead of push.
+  // then convert each frame itself (output/yuv420.h) and push_yuv420 it instead of push.
   virtual std::optional<PictureSize> yuv420_size() const { return std::nullopt; }
   virtual void push_yuv420(Yuv420Image) {
     throw std::logic_error("this frame sink takes RGBA images only");

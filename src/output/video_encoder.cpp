@@ -260,6 +260,10 @@ void VideoEncoder::Impl::open_codec() {
     codec->color_primaries = AVCOL_PRI_BT709;
     codec->color_trc = AVCOL_TRC_BT709;
     codec->colorspace = AVCOL_SPC_BT709;
+    // Each chroma sample is its 2x2 block's mean (output/yuv420.h; swscale's same-size
+    // conversion scales the chroma planes the same way): centred, not H.264's default left
+    // siting, which would shift colour edges by half a pixel in players that honour it.
+    codec->chroma_sample_location = AVCHROMA_LOC_CENTER;
   }
 
   AVDictionary* options = nullptr;
@@ -585,7 +589,8 @@ Yuv420Image VideoEncoder::spare_yuv420() {
 void VideoEncoder::push_yuv420(Yuv420Image image) {
   Impl& d = *impl_;
   if (d.format->kind == Kind::gif || image.width != d.coded_width ||
-      image.height != d.coded_height || image.bytes.size() != image.plane_offset(3))
+      image.height != d.coded_height || image.luma_stride < image.width ||
+      image.luma_stride % 2 != 0 || image.bytes.size() != image.plane_offset(3))
     throw std::invalid_argument("VideoEncoder::push_yuv420: a " + std::to_string(image.width) +
                                 "x" + std::to_string(image.height) +
                                 " Y'CbCr picture where yuv420_size() asks for another");

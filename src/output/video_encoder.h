@@ -69,8 +69,8 @@ class VideoEncoder : public FrameSink {
   // worker's first error (OutputError), e.g. a full disk.
   void push(Image image) override;
   // MP4 and WebM also take Y'CbCr 4:2:0 pictures converted by the caller (output/yuv420.h)
-  // at this size (the frame's, padded to even for H.264): the encoder's thread then only
-  // copies and encodes. GIF takes RGBA only.
+  // at this size (the frame's, padded to even for H.264): the encoder reads them in place
+  // (no copy, no conversion on its thread). GIF takes RGBA only.
   std::optional<PictureSize> yuv420_size() const override;
   void push_yuv420(Yuv420Image image) override;
   Yuv420Image spare_yuv420() override;

@@ -113,11 +113,13 @@ void chroma_row(const std::uint8_t* a, const std::uint8_t* b, int in_width, int 
 }  // namespace
 
 void yuv420_from_rows(const RgbaRows& band, int first, int image_height, Yuv420Image& out) {
-  if (band.width <= 0 || band.height <= 0 || first % 2 != 0 || out.width < band.width ||
-      first + band.height > image_height || image_height > out.height)
-    throw std::invalid_argument("yuv420_from_rows: a band outside the picture");
-  // The band with the picture's last row also makes the padding rows below it.
+  // The band with the picture's last row also makes the padding rows below it; every other
+  // band has whole chroma blocks (an even first row and an even height).
   const bool last = first + band.height == image_height;
+  if (band.width <= 0 || band.height <= 0 || first % 2 != 0 || (!last && band.height % 2 != 0) ||
+      out.width < band.width || first + band.height > image_height || image_height > out.height ||
+      out.bytes.size() < out.plane_offset(3))
+    throw std::invalid_argument("yuv420_from_rows: a band outside the picture");
   const int end = last ? out.height : first + band.height;
   const auto row = [&](int y) { return band.row(std::min(y, image_height - 1) - first); };
   for (int y = first; y < end; ++y)

@@ -36,8 +36,9 @@ void rgba_to_yuv420(const RgbaRows& in, int width, int height, Yuv420Image& out)
 
 // The same, one band of rows at a time, so that each band is converted while it is still in
 // the cache: `band` holds rows first .. first + band.height - 1 of a picture image_height
-// rows high (first even), `out` is already sized. The band with the last row also fills
-// out's padding rows.
+// rows high, `out` is already sized (Yuv420Image::resize). `first` is even, and so is the
+// height of every band but the last, which also fills out's padding rows. Throws
+// std::invalid_argument otherwise.
 void yuv420_from_rows(const RgbaRows& band, int first, int image_height, Yuv420Image& out);
 
 }  // namespace cb
