@@ -277,6 +277,53 @@ TEST_CASE("render --frames: numbered PNGs, the last one exactly the snapshot", "
   CHECK(cb::compare_images(last, snap, 0).max_channel == 0);
 }
 
+TEST_CASE("snapshot --overlay: the video's frame at that tau, pixel for pixel", "[render_cli]") {
+  if (!gl_available()) return;
+  TempDir dir;
+  const fs::path frames = dir.path / "frames";
+  fs::create_directory(frames);
+  // Past the break at tau ~ 30, so the plots, the space-time picture and the HUD's break list
+  // all have content. 640x360: the smallest frame with an overlay.
+  const std::string common = " --size 640x360 --set render.fps=30 --set render.speed=30";
+  const auto r = chainbreak("render " + kBreaking + " --frames " + frames.string() + common +
+                            " --overlay all --quiet");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const auto s = chainbreak("snapshot " + kBreaking + " --at 12,33 --overlay all -o " +
+                            dir.path.string() + common);
+  INFO(s.err);
+  REQUIRE(s.status == 0);
+  for (const auto& [tau, frame] : {std::pair{"12", 12}, std::pair{"33", 33}}) {
+    char name[64];
+    std::snprintf(name, sizeof name, "ramp_pulled_end_%06d.png", frame);
+    const cb::Image video = cb::read_png((frames / name).string());
+    const cb::Image snap = cb::read_png(
+        (dir.path / ("ramp_pulled_end_tau_0000" + std::string(tau) + ".000.png")).string());
+    CHECK(cb::compare_images(video, snap, 0).max_channel == 0);
+    // ...and the overlay is there: the chain-only snapshot differs below the chain's band.
+    const auto plain =
+        chainbreak("snapshot " + kBreaking + " --at " + tau + " -o " + frames.string() + common);
+    REQUIRE(plain.status == 0);
+    const cb::Image alone = cb::read_png(plain.out.substr(0, plain.out.find('\n')));
+    CHECK(cb::compare_images(alone, snap, 8).fraction_over > 0.05);
+  }
+
+  // A time between frames, a time past the end, a frame too small: exit 2, with the fix.
+  const auto off = chainbreak("snapshot " + kBreaking + " --at 12.5 --overlay all -o " +
+                              dir.path.string() + common);
+  CHECK(off.status == 2);
+  CHECK_THAT(off.err, Catch::Contains("a multiple of speed / fps = 1") &&
+                          Catch::Contains("nearest to 12.5: 12 or 13"));
+  const auto late = chainbreak("snapshot " + kBreaking + " --at 500 --overlay all -o " +
+                               dir.path.string() + common);
+  CHECK(late.status == 2);
+  CHECK_THAT(late.err, Catch::Contains("past the video's last frame"));
+  const auto small = chainbreak("snapshot " + kBreaking + " --at 12 --overlay all -o " +
+                                dir.path.string() + " --size 320x180");
+  CHECK(small.status == 2);
+  CHECK_THAT(small.err, Catch::Contains("too small for the overlay"));
+}
+
 TEST_CASE("render: Ctrl-C exits 130 and keeps a playable .partial.mp4", "[render_cli]") {
   if (!gl_available()) return;
   TempDir dir;

@@ -44,6 +44,10 @@ struct SnapshotOptions {
   std::string at;  // "T1,T2,..."
   std::string out_dir = "renders";
   FrameOptions frame;
+  // Overlay parts ("hud,plots", "all"); empty: the chain alone. With an overlay each PNG is
+  // the `render` video's frame at that tau (same plan, same pixels), so tau must be a frame
+  // time, k x speed / fps.
+  std::string overlay;  // frame times follow the scene's [render] fps and speed (or --set)
 };
 int snapshot_command(const SnapshotOptions& options);
 

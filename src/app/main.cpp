@@ -92,6 +92,9 @@ int main(int argc, char** argv) {
       ->required();
   snap_cmd->add_option("-o,--out", snap.out_dir, "Folder for the PNGs (default renders)");
   snap_cmd->add_option("--set", sets, "Override a scene key (repeatable)");
+  snap_cmd->add_option("--overlay", snap.overlay,
+                       "Draw the video's overlay too (hud,plots,spacetime,modes, or all): each "
+                       "PNG is then the video's frame at that tau, which must be a frame time");
   add_frame_options(snap_cmd, snap.frame);
 
   cb::RenderOptions render;

@@ -14,6 +14,7 @@
 
 #include "app/bounded_queue.h"
 #include "app/commands.h"
+#include "app/frame_source.h"
 #include "app/frames.h"
 #include "app/progress.h"
 #include "app/render_plan.h"
@@ -21,39 +22,30 @@
 #include "output/output_file.h"
 #include "output/video_encoder.h"
 #include "overlay/overlay.h"
-#include "overlay/overlay_history.h"
-#include "physics/integrator.h"
 
 namespace cb {
 
 namespace {
 
-// The physics side of the pipeline: steps to each frame's time and builds its snapshot.
-// Runs on its own thread; stops early on interruption or a non-finite state.
+// The physics side of the pipeline, on its own thread: each frame's snapshot into the queue.
+// Stops early on interruption or a non-finite state.
 struct Producer {
-  const SceneDesc& scene;
-  const RenderPlan& plan;
-  int threads;
+  FrameSource& source;
+  std::int64_t frames;
   BoundedQueue<RenderSnapshot>& queue;
-  OverlayHistory* history;  // null: no overlay
   std::string error;
   std::vector<BreakEvent> breaks;
 
   void operator()() {
-    Integrator sim(scene.chain, make_forcing(scene.drive), {plan.dt, threads});
-    for (std::int64_t k = 0; k < plan.frames && !g_interrupted; ++k) {
-      if (!sim.advance_to(k * plan.substeps)) {
-        error = sim.error();
+    for (std::int64_t k = 0; k < frames && !g_interrupted; ++k) {
+      std::optional<RenderSnapshot> snap = source.frame(k);
+      if (!snap) {
+        error = source.error();
         break;
       }
-      RenderSnapshot snap = build_snapshot(sim.state(), scene.chain, sim.force_now(), plan.style);
-      if (history) {
-        history->record(k, sim.state(), sim.force_now());
-        snap.overlay = history->share();
-      }
-      if (!queue.push(std::move(snap))) break;
+      if (!queue.push(std::move(*snap))) break;
     }
-    breaks = sim.state().breaks;
+    breaks = source.state().breaks;
     queue.close();
   }
 };
@@ -97,12 +89,9 @@ int render_command(const RenderOptions& o) {
   const std::string gl = describe(*canvas.context);
   // Made here, before any frame: a missing font stops the run with nothing written.
   std::unique_ptr<Overlay> overlay;
-  std::unique_ptr<OverlayHistory> history;
-  if (plan.overlay_layout.enabled) {
+  if (plan.overlay_layout.enabled)
     overlay = std::make_unique<Overlay>(plan.frame.width, plan.frame.height, plan.frame.fps,
                                         plan.overlay);
-    history = std::make_unique<OverlayHistory>(scene.chain, scene.drive, plan.overlay_setup);
-  }
   if (!o.quiet) {
     std::fprintf(stderr, "render %s: %lld frames %dx%d at %g fps (%g tau/s, dt %g) -> %s\n",
                  scene.name.c_str(), static_cast<long long>(plan.frames), plan.frame.width,
@@ -113,7 +102,8 @@ int render_command(const RenderOptions& o) {
   }
 
   BoundedQueue<RenderSnapshot> snapshots(3);
-  Producer producer{scene, plan, o.threads, snapshots, history.get(), {}, {}};
+  FrameSource source(scene, plan, o.threads);
+  Producer producer{source, plan.frames, snapshots, {}, {}};
   std::thread physics(std::ref(producer));
   Progress progress("render " + scene.name, static_cast<double>(plan.frames), o.quiet, "frames");
   std::int64_t done = 0;

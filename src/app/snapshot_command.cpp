@@ -6,9 +6,12 @@
 #include <optional>
 
 #include "app/commands.h"
+#include "app/frame_source.h"
 #include "app/frames.h"
+#include "app/render_plan.h"
 #include "output/frame_writer.h"
 #include "output/png_writer.h"
+#include "overlay/overlay.h"
 #include "physics/integrator.h"
 
 namespace cb {
@@ -41,11 +44,75 @@ std::string snapshot_name(const std::string& scene, double tau) {
   return scene + buf;
 }
 
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+// With an overlay: the video's frames at those times, made as `render` makes them (its plan,
+// its FrameSource, its Overlay), so that a PNG equals the video's frame pixel for pixel.
+int overlay_snapshots(const SnapshotOptions& o, const SceneDesc& scene,
+                      const std::vector<double>& times) {
+  RenderOptions ro;
+  ro.frames_dir = o.out_dir;  // PNGs: no video codec to check
+  ro.frame = o.frame;
+  ro.overlay = o.overlay;
+  RenderPlan plan = plan_render(scene, ro);
+  if (!plan.overlay_layout.enabled)
+    throw SceneError("--overlay " + o.overlay + ": " +
+                     (plan.overlay.any() ? "the frame is too small for the overlay (at least " +
+                                               std::to_string(kOverlayMinWidth) + "x" +
+                                               std::to_string(kOverlayMinHeight) + ")"
+                                         : std::string("no part switched on")));
+  require_writable_dir(o.out_dir);
+  measure_plan(scene, plan);
+  std::vector<std::int64_t> frames;
+  for (double tau : times) {
+    const double k = tau / plan.tau_per_frame;
+    const auto frame = static_cast<std::int64_t>(std::llround(k));
+    if (std::abs(k - static_cast<double>(frame)) > 1e-9 * std::max(1.0, k))
+      throw SceneError("--at " + o.at + ": with --overlay each tau must be a frame time of the " +
+                       "video, a multiple of speed / fps = " + number(plan.tau_per_frame) +
+                       "; nearest to " + number(tau) + ": " +
+                       number(std::floor(k) * plan.tau_per_frame) + " or " +
+                       number(std::ceil(k) * plan.tau_per_frame) +
+                       " (or change the frame times with --set render.fps=... / render.speed=...)");
+    if (frame >= plan.frames)
+      throw SceneError("--at " + o.at + ": tau " + number(tau) +
+                       " is past the video's last frame (tau " +
+                       number(static_cast<double>(plan.frames - 1) * plan.tau_per_frame) +
+                       "; see integrator.t_end and after_break)");
+    frames.push_back(frame);
+  }
+  Canvas canvas = make_canvas(o.frame, plan.frame.width, plan.frame.height);
+  Overlay overlay(plan.frame.width, plan.frame.height, plan.frame.fps, plan.overlay);
+  FrameSource source(scene, plan, 1);
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    if (g_interrupted) return 130;
+    const std::optional<RenderSnapshot> snap = source.frame(frames[i]);
+    if (!snap) {
+      std::fprintf(stderr, "chainbreak: %s\n", source.error().c_str());
+      return 1;
+    }
+    canvas.renderer->draw(*snap);
+    overlay.draw(*snap);
+    Image image;
+    canvas.renderer->read(image);
+    const std::string path =
+        (std::filesystem::path(o.out_dir) / snapshot_name(scene.name, times[i])).string();
+    write_png(path, image);
+    std::printf("%s\n", path.c_str());
+  }
+  return 0;
+}
+
 }  // namespace
 
 int snapshot_command(const SnapshotOptions& o) {
   const SceneDesc scene = load_scene(o.scene, o.overrides);
   const std::vector<double> times = parse_times(o.at);
+  if (!o.overlay.empty() && o.overlay != "none") return overlay_snapshots(o, scene, times);
   const RenderDesc frame = frame_settings(scene, o.frame);
   require_writable_dir(o.out_dir);
   const double dt = scene.integrator.dt;
