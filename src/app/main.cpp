@@ -126,6 +126,13 @@ int main(int argc, char** argv) {
       ->excludes(no_overlay);
   add_frame_options(render_cmd, render.frame);
 
+  // `view`: the rest of the line goes to the viewer executable, --help included.
+  cb::ViewOptions view;
+  auto* view_cmd = app.add_subcommand(
+      "view", "Real-time window (needs a display); `chainbreak view SCENE --help` for options");
+  view_cmd->prefix_command();
+  view_cmd->set_help_flag();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -146,6 +153,10 @@ int main(int argc, char** argv) {
     if (render_cmd->parsed()) {
       render.overrides = overrides;
       return cb::render_command(render);
+    }
+    if (view_cmd->parsed()) {
+      view.args = view_cmd->remaining();
+      return cb::view_command(view);
     }
     sweep.overrides = overrides;
     return cb::sweep_command(sweep);

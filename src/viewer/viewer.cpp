@@ -1,0 +1,305 @@
+// The viewer's loop (viewer.h). Index: settings from the script; the Viewer (requests,
+// physics, drawing, one frame); run_viewer.
+#include "viewer/viewer.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+
+#include "app/frames.h"
+#include "gl/gl_loader.h"
+#include "output/output_file.h"
+#include "overlay/overlay.h"
+#include "render/renderer.h"
+#include "viewer/controls.h"
+#include "viewer/pacer.h"
+#include "viewer/script.h"
+#include "viewer/session.h"
+#include "viewer/spring_pick.h"
+#include "viewer/spring_plot.h"
+#include "viewer/ui_context.h"
+#include "viewer/viewer_outputs.h"
+#include "viewer/window.h"
+
+namespace cb {
+
+namespace {
+
+// A script's `set KEY VALUE`, as the matching control would do it.
+void apply_setting(const ScriptAction& a, SceneDesc& draft, ViewerModel& model,
+                   ViewerRequests& requests) {
+  if (a.key == "view") {
+    draft.render.view = a.argument;
+    requests.view_changed = true;
+    return;
+  }
+  char* end = nullptr;
+  const double v = std::strtod(a.argument.c_str(), &end);
+  if (*end != '\0' || !std::isfinite(v))
+    throw SceneError("script line " + std::to_string(a.line) + ": set " + a.key +
+                     " needs a number, got '" + a.argument + "'");
+  if (a.key == "speed") {
+    model.speed = v;
+    requests.speed_changed = true;
+    return;
+  }
+  if (a.key == "beads") draft.chain.beads = static_cast<int>(v);
+  if (a.key == "gamma") draft.chain.gamma = v;
+  if (a.key == "threshold") draft.chain.threshold = v;
+  if (a.key == "beta") draft.drive.beta = v;
+  if (a.key == "amplitude") draft.drive.amplitude = v;
+  if (a.key == "period") draft.drive.period = v;
+  if (a.key == "t0") draft.drive.t0 = v;
+  requests.apply_settings = true;
+}
+
+void apply_script(const std::vector<ScriptAction>& actions, SceneDesc& draft, ViewerModel& model,
+                  ViewerRequests& r) {
+  for (const ScriptAction& a : actions) {
+    if (a.action == "play") model.playing = true;
+    if (a.action == "pause") model.playing = false;
+    if (a.action == "step") r.step += std::max(1, std::atoi(a.argument.c_str()));
+    if (a.action == "restart") r.restart = true;
+    if (a.action == "quit") r.quit = true;
+    if (a.action == "set") apply_setting(a, draft, model, r);
+    if (a.action == "select") model.pinned_spring = std::atoi(a.argument.c_str());
+    if (a.action == "snapshot") r.snapshot = true, r.snapshot_path = a.argument;
+    if (a.action == "save") r.save = true, r.save_path = a.argument;
+    if (a.action == "record" && (a.argument == "stop") == model.recording)
+      r.record = true, r.record_path = a.argument == "stop" ? "" : a.argument;
+  }
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+struct Viewer {
+  const ViewerOptions& options;
+  Window& window;
+  Session session;
+  SceneDesc draft;
+  ViewerModel model;
+  UiContext ui;
+  Renderer renderer;
+  std::unique_ptr<Overlay> overlay;
+  ViewerOutputs outputs;
+  SpringPlot plot;
+  Pacer pacer;
+  std::optional<ScriptPlayer> script;
+  std::int64_t display_frame = 0;
+  std::vector<double> frame_seconds;
+  bool fixed_step = false;  // script or benchmark: a fixed tau per displayed frame
+
+  Viewer(const ViewerOptions& o, Window& w, SceneDesc scene)
+      : options(o),
+        window(w),
+        session(scene, o.render),
+        draft(session.scene()),
+        ui(w.handle()),
+        renderer(session.plan().frame.width, session.plan().frame.height),
+        outputs(o.out_dir, scene.name) {
+    const RenderPlan& p = session.plan();
+    if (p.overlay_layout.enabled)
+      overlay = std::make_unique<Overlay>(p.frame.width, p.frame.height, p.frame.fps, p.overlay);
+    if (!o.script.empty()) script.emplace(load_script(o.script));
+    fixed_step = script || o.benchmark_frames > 0;
+    model.script = fixed_step;
+    model.speed = session.scene().render.speed;
+    model.playing = o.play || o.benchmark_frames > 0;
+    pacer.reset(Window::now(), 0, model.speed, p.tau_per_frame);
+  }
+
+  void apply(ViewerRequests& r) {
+    if (r.apply_settings) {
+      draft.render.speed = model.speed;
+      session.scene() = draft;
+      r.restart = true;
+    }
+    if (r.restart) {
+      session.scene().render.speed = model.speed;
+      try {
+        session.restart();
+      } catch (const std::exception& e) {  // a setting the scene's rules reject
+        model.status = e.what();
+        draft = session.scene();
+      }
+      plot.reset();
+      r.speed_changed = true;
+    }
+    if (r.view_changed) session.set_view(draft.render.view);
+    if (r.speed_changed)
+      pacer.reset(Window::now(), session.frame(), model.speed, session.plan().tau_per_frame);
+    if (r.step > 0) {
+      model.playing = false;
+      session.advance(r.step);
+    }
+    if (r.save) {
+      SceneDesc saved = session.scene();
+      saved.render.speed = model.speed;
+      saved.render.view = draft.render.view;
+      model.status = outputs.save(saved, r.save_path);
+    }
+    if (r.quit) window.close();
+  }
+
+  void advance_physics() {
+    const RenderPlan& p = session.plan();
+    if (!model.playing || session.at_end()) {
+      pacer.reset(Window::now(), session.frame(), model.speed, p.tau_per_frame);
+      model.behind = false;
+      return;
+    }
+    if (fixed_step) {
+      // The scene's frame rate sets the tau of one displayed frame: speed / fps.
+      const double frames = model.speed / p.frame.fps / p.tau_per_frame;
+      session.advance(std::max<std::int64_t>(1, std::llround(frames)));
+      return;
+    }
+    const double start = Window::now();
+    const std::int64_t target = pacer.due(start);
+    bool cut = false;
+    while (session.frame() < target && !session.at_end() && session.error().empty()) {
+      session.advance(1);
+      if (Window::now() - start > Pacer::kPhysicsBudget) {
+        cut = session.frame() < target;
+        break;
+      }
+    }
+    pacer.reached(Window::now(), session.frame(), cut);
+    model.behind = pacer.behind();
+    model.achieved_ratio = pacer.achieved_ratio();
+  }
+
+  // The frame's rectangle in the window: as large as fits, aspect kept, centred.
+  void frame_rect(int fb_w, int fb_h, int rect[4]) const {
+    const double scale = std::min(static_cast<double>(fb_w) / renderer.width(),
+                                  static_cast<double>(fb_h) / renderer.height());
+    const int w = static_cast<int>(renderer.width() * scale);
+    const int h = static_cast<int>(renderer.height() * scale);
+    rect[0] = (fb_w - w) / 2;
+    rect[1] = (fb_h - h) / 2;
+    rect[2] = rect[0] + w;
+    rect[3] = rect[1] + h;
+  }
+
+  // Hover and click: the spring under the mouse, in the frame's pixels.
+  void pick(const RenderSnapshot& snap, const int rect[4], int fb_h) {
+    const ImGuiIO& io = ImGui::GetIO();
+    model.hovered_spring = 0;
+    if (io.WantCaptureMouse || rect[2] <= rect[0]) return;
+    const float mx = io.MousePos.x * io.DisplayFramebufferScale.x;
+    const float my = io.MousePos.y * io.DisplayFramebufferScale.y;
+    const float scale =
+        static_cast<float>(renderer.width()) / static_cast<float>(rect[2] - rect[0]);
+    // GL's rectangle is bottom-up; the frame's pixels are top-down.
+    const float x = (mx - rect[0]) * scale;
+    const float y = (my - (fb_h - rect[3])) * scale;
+    model.hovered_spring = spring_at(snap.layout, session.state(), x, y);
+    if (ImGui::IsMouseClicked(0)) model.pinned_spring = model.hovered_spring;
+  }
+
+  void frame(double frame_start) {
+    window.poll();
+    ViewerRequests r;
+    if (script) apply_script(script->take(display_frame), draft, model, r);
+    ui.begin_frame();
+    draw_controls(model, draft, session, r);
+    draw_help(model);
+    handle_shortcuts(model, draft, r);
+    apply(r);
+    advance_physics();
+
+    const RenderSnapshot snap = session.snapshot();
+    renderer.draw(snap);
+    if (overlay) overlay->draw(snap);
+    if (r.snapshot || r.record || outputs.recording()) {
+      Image image;
+      renderer.read(image);
+      if (r.snapshot) model.status = outputs.snapshot(image, session.tau(), r.snapshot_path);
+      if (r.record) {
+        model.status =
+            outputs.recording()
+                ? outputs.stop_recording()
+                : outputs.start_recording(image.width, image.height,
+                                          static_cast<int>(std::lround(session.plan().frame.fps)),
+                                          r.record_path);
+      }
+      if (outputs.recording()) {
+        try {
+          outputs.push(std::move(image));
+        } catch (const OutputError& e) {
+          model.status = std::string("record failed: ") + e.what();
+          outputs.stop_recording();
+        }
+      }
+      model.recording = outputs.recording();
+    }
+    GLint source = 0;
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &source);
+    int fb_w = 0, fb_h = 0, rect[4];
+    window.framebuffer_size(fb_w, fb_h);
+    frame_rect(fb_w, fb_h, rect);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(source));
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glDisable(GL_SCISSOR_TEST);
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glBlitFramebuffer(0, 0, renderer.width(), renderer.height(), rect[0], rect[1], rect[2], rect[3],
+                      GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, fb_w, fb_h);
+
+    pick(snap, rect, fb_h);
+    plot.draw(session, model.hovered_spring ? model.hovered_spring : model.pinned_spring);
+    ui.end_frame();
+    window.swap();
+
+    const double seconds = Window::now() - frame_start;
+    frame_seconds.push_back(seconds);
+    model.display_fps = 0.9 * model.display_fps + 0.1 / std::max(seconds, 1e-6);
+    ++display_frame;
+    if (script && script->finished()) window.close();
+    if (options.benchmark_frames > 0 && display_frame >= options.benchmark_frames) window.close();
+  }
+};
+
+}  // namespace
+
+int run_viewer(const ViewerOptions& o) {
+  SceneDesc scene = load_scene(o.scene, o.overrides);
+  if (o.speed > 0) scene.render.speed = o.speed;
+  const RenderDesc frame = frame_settings(scene, o.render.frame);  // checks --size etc. first
+  // Script and benchmark runs go flat out (no vsync): their time is the frame count.
+  const bool unattended = !o.script.empty() || o.benchmark_frames > 0;
+  Window window(frame.width, frame.height, "chainbreak: " + scene.title, !unattended);
+  Viewer viewer(o, window, std::move(scene));
+  while (!window.should_close()) viewer.frame(Window::now());
+
+  if (o.benchmark_frames > 0) {
+    // The first frames pay for shader compilation and the font atlas: left out.
+    const std::size_t skip = std::min<std::size_t>(10, viewer.frame_seconds.size() / 2);
+    std::vector<double> steady(viewer.frame_seconds.begin() + static_cast<long>(skip),
+                               viewer.frame_seconds.end());
+    const double m = median(steady);
+    int fb_w = 0, fb_h = 0;
+    window.framebuffer_size(fb_w, fb_h);
+    std::printf(
+        "{\"frames\":%zu,\"width\":%d,\"height\":%d,\"window\":\"%dx%d\",\"beads\":%d,"
+        "\"median_ms\":%.3f,\"fps\":%.2f}\n",
+        steady.size(), viewer.renderer.width(), viewer.renderer.height(), fb_w, fb_h,
+        viewer.session.scene().chain.beads, 1e3 * m, m > 0 ? 1.0 / m : 0.0);
+  }
+  if (!viewer.session.error().empty()) {
+    std::fprintf(stderr, "chainbreak view: %s\n", viewer.session.error().c_str());
+    return unattended ? 1 : 0;
+  }
+  return 0;
+}
+
+}  // namespace cb
