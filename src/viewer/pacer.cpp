@@ -7,7 +7,7 @@ namespace cb {
 
 void Pacer::reset(double now, std::int64_t frame, double tau_per_second, double tau_per_frame) {
   start_time_ = last_time_ = now;
-  start_frame_ = last_frame_ = frame;
+  start_frame_ = last_frame_ = last_due_ = frame;
   frames_per_second_ = tau_per_frame > 0 ? tau_per_second / tau_per_frame : 0.0;
   ratio_ = 1.0;
 }
@@ -18,22 +18,25 @@ std::int64_t Pacer::due(double now) const {
 }
 
 void Pacer::reached(double now, std::int64_t frame, bool cut_short) {
-  const double elapsed = now - last_time_;
-  if (elapsed > 0 && frames_per_second_ > 0) {
-    const double ratio = static_cast<double>(frame - last_frame_) / (elapsed * frames_per_second_);
-    // An exponential average over about one second of displayed frames.
-    const double weight = std::min(1.0, elapsed);
-    ratio_ = std::min(1.0, (1.0 - weight) * ratio_ + weight * ratio);
+  // Achieved against due over this displayed frame, both in whole grid frames, so that a
+  // display rate that is no multiple of the grid's does not look like falling behind.
+  const std::int64_t due_now = due(now);
+  const std::int64_t expected = due_now - last_due_;
+  if (expected > 0) {
+    const double sample =
+        std::min(1.0, static_cast<double>(frame - last_frame_) / static_cast<double>(expected));
+    const double weight = std::clamp(now - last_time_, 0.0, 1.0);  // about a second's average
+    ratio_ = (1.0 - weight) * ratio_ + weight * sample;
   }
-  last_time_ = now;
-  last_frame_ = frame;
+  if (!cut_short && frame >= due_now) ratio_ = std::max(ratio_, 0.999);  // on time
   if (cut_short) {
     // Drop the backlog: the next frames are due from here, at the requested speed.
     start_time_ = now;
     start_frame_ = frame;
-  } else if (frame >= due(now)) {
-    ratio_ = std::max(ratio_, 0.999);  // on time: whatever the average says
   }
+  last_time_ = now;
+  last_frame_ = frame;
+  last_due_ = due(now);
 }
 
 }  // namespace cb

@@ -32,7 +32,7 @@ class Pacer {
 
  private:
   double start_time_ = 0.0, last_time_ = 0.0;
-  std::int64_t start_frame_ = 0, last_frame_ = 0;
+  std::int64_t start_frame_ = 0, last_frame_ = 0, last_due_ = 0;
   double frames_per_second_ = 0.0;
   double ratio_ = 1.0;
 };

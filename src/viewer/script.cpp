@@ -51,13 +51,15 @@ std::vector<ScriptAction> parse_script(const std::string& text, const std::strin
       if (!known_key(a.key))
         fail("unknown setting '" + a.key +
              "'; expected speed, beads, gamma, threshold, beta, amplitude, period, t0 or view");
-    } else if (act == "snapshot" || act == "save" || act == "record" || act == "select") {
+    } else if (act == "snapshot" || act == "screenshot" || act == "save" || act == "record" ||
+               act == "select") {
       if (!(words >> a.argument)) fail(act + " needs an argument, e.g. 10 " + act + " out");
     } else if (act == "step") {
       if (!(words >> a.argument)) a.argument = "1";
     } else if (act != "play" && act != "pause" && act != "restart" && act != "quit") {
       fail("unknown action '" + act +
-           "'; expected play, pause, step, restart, quit, set, snapshot, save, record or select");
+           "'; expected play, pause, step, restart, quit, set, snapshot, screenshot, save, record "
+           "or select");
     }
     std::string extra;
     if (words >> extra) fail("unexpected '" + extra + "' after the action");

@@ -8,6 +8,7 @@
 //   play | pause | step [K] | restart | quit
 //   set KEY VALUE     KEY: speed, beads, gamma, threshold, beta, amplitude, period, t0, view
 //   snapshot PATH     the frame (without the controls) as a PNG, after this frame's physics
+//   screenshot PATH   the whole window, controls included, as a PNG
 //   save PATH         the current settings as a scene file
 //   record PATH       start writing the session to a video; `record stop` ends it
 //   select SPRING     show spring SPRING's phi(tau) plot, as a click on it would
@@ -22,7 +23,7 @@ namespace cb {
 
 struct ScriptAction {
   std::int64_t frame = 0;
-  std::string action;    // play, pause, step, restart, quit, set, snapshot, save, record, select
+  std::string action;    // play, pause, step, ... (above)
   std::string key;       // set: the setting
   std::string argument;  // set: the value; snapshot/save/record: the path; step/select: a number
   int line = 0;          // in the file, for messages

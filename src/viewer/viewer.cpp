@@ -68,6 +68,7 @@ void apply_script(const std::vector<ScriptAction>& actions, SceneDesc& draft, Vi
     if (a.action == "select") model.pinned_spring = std::atoi(a.argument.c_str());
     if (a.action == "snapshot") r.snapshot = true, r.snapshot_path = a.argument;
     if (a.action == "save") r.save = true, r.save_path = a.argument;
+    if (a.action == "screenshot") r.screenshot_path = a.argument;
     if (a.action == "record" && (a.argument == "stop") == model.recording)
       r.record = true, r.record_path = a.argument == "stop" ? "" : a.argument;
   }
@@ -96,7 +97,7 @@ struct Viewer {
   std::vector<double> frame_seconds;
   bool fixed_step = false;  // script or benchmark: a fixed tau per displayed frame
 
-  Viewer(const ViewerOptions& o, Window& w, SceneDesc scene)
+  Viewer(const ViewerOptions& o, Window& w, SceneDesc scene, std::vector<ScriptAction> actions)
       : options(o),
         window(w),
         session(scene, o.render),
@@ -107,7 +108,7 @@ struct Viewer {
     const RenderPlan& p = session.plan();
     if (p.overlay_layout.enabled)
       overlay = std::make_unique<Overlay>(p.frame.width, p.frame.height, p.frame.fps, p.overlay);
-    if (!o.script.empty()) script.emplace(load_script(o.script));
+    if (!o.script.empty()) script.emplace(std::move(actions));
     fixed_step = script || o.benchmark_frames > 0;
     model.script = fixed_step;
     model.speed = session.scene().render.speed;
@@ -258,6 +259,8 @@ struct Viewer {
     pick(snap, rect, fb_h);
     plot.draw(session, model.hovered_spring ? model.hovered_spring : model.pinned_spring);
     ui.end_frame();
+    if (!r.screenshot_path.empty())
+      model.status = outputs.snapshot(window.read_back_buffer(), session.tau(), r.screenshot_path);
     window.swap();
 
     const double seconds = Window::now() - frame_start;
@@ -274,11 +277,14 @@ struct Viewer {
 int run_viewer(const ViewerOptions& o) {
   SceneDesc scene = load_scene(o.scene, o.overrides);
   if (o.speed > 0) scene.render.speed = o.speed;
-  const RenderDesc frame = frame_settings(scene, o.render.frame);  // checks --size etc. first
+  // Mistakes in the options and the script are reported before a window opens.
+  const RenderDesc frame = frame_settings(scene, o.render.frame);
+  std::vector<ScriptAction> actions;
+  if (!o.script.empty()) actions = load_script(o.script);
   // Script and benchmark runs go flat out (no vsync): their time is the frame count.
   const bool unattended = !o.script.empty() || o.benchmark_frames > 0;
   Window window(frame.width, frame.height, "chainbreak: " + scene.title, !unattended);
-  Viewer viewer(o, window, std::move(scene));
+  Viewer viewer(o, window, std::move(scene), std::move(actions));
   while (!window.should_close()) viewer.frame(Window::now());
 
   if (o.benchmark_frames > 0) {

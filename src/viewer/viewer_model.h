@@ -30,6 +30,7 @@ struct ViewerRequests {
   bool speed_changed = false;   // re-base the pacer
   bool snapshot = false, save = false, record = false, quit = false;  // record: start or stop
   std::string snapshot_path, save_path, record_path;                  // empty: a name in --out-dir
+  std::string screenshot_path;  // script only: the whole window
 };
 
 }  // namespace cb

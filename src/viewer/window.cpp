@@ -85,6 +85,22 @@ void Window::framebuffer_size(int& width, int& height) const {
   glfwGetFramebufferSize(window_, &width, &height);
 }
 
+Image Window::read_back_buffer() const {
+  int width = 0, height = 0;
+  framebuffer_size(width, height);
+  Image image(width, height);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glReadBuffer(GL_BACK);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+  // GL's rows are bottom-up, an Image's top-down.
+  const std::size_t row = static_cast<std::size_t>(width) * 4;
+  for (int y = 0; y < height / 2; ++y)
+    std::swap_ranges(image.pixel(0, y), image.pixel(0, y) + row, image.pixel(0, height - 1 - y));
+  for (std::size_t i = 3; i < image.rgba.size(); i += 4) image.rgba[i] = 255;  // opaque
+  return image;
+}
+
 double Window::now() {
   return glfwGetTime();
 }

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "output/image.h"
+
 struct GLFWwindow;
 
 namespace cb {
@@ -32,6 +34,8 @@ class Window {
   // The drawable size in pixels (may differ from the window's size on high-DPI screens).
   void framebuffer_size(int& width, int& height) const;
   static double now();  // seconds, monotonic
+  // What the window shows, controls included: the back buffer, read before swap().
+  Image read_back_buffer() const;
 
  private:
   GLFWwindow* window_ = nullptr;
