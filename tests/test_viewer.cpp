@@ -25,8 +25,11 @@ const std::string kScene = std::string(CHAINBREAK_SCENES) + "/anomalous_breaking
 // the whole run, as `render` does) the one `snapshot --at 20` measures.
 const std::string kSets = "--set render.speed=12 --set integrator.t_end=20";
 
-bool have_xvfb() {
-  return std::system("command -v xvfb-run >/dev/null 2>&1") == 0;
+// True, after saying so, when xvfb-run is missing: the test is skipped, not failed.
+bool skip_without_xvfb() {
+  if (std::system("command -v xvfb-run >/dev/null 2>&1") == 0) return false;
+  WARN("skipped: xvfb-run not found (apt-get install xvfb xauth)");
+  return true;
 }
 
 // `chainbreak view ARGS` on a private virtual screen large enough for a 1080p window.
@@ -85,10 +88,7 @@ TEST_CASE("a bad script line is reported before any window opens", "[viewer][cli
 
 TEST_CASE("a scripted view snapshot matches the headless snapshot at the same tau",
           "[viewer][xvfb]") {
-  if (!have_xvfb()) {
-    WARN("skipped: xvfb-run not found (apt-get install xvfb xauth)");
-    return;
-  }
+  if (skip_without_xvfb()) return;
   TempDir dir("chainbreak-view");
   // 100 frames of 0.2 tau: tau = 20. Then the snapshot, a saved scene and quit.
   write_file(dir.file("s.txt"), "0 play\n100 pause\n100 snapshot " + dir.file("view.png") +
@@ -111,10 +111,7 @@ TEST_CASE("a scripted view snapshot matches the headless snapshot at the same ta
 }
 
 TEST_CASE("with the overlay, the view's frame is the rendered video's frame", "[viewer][xvfb]") {
-  if (!have_xvfb()) {
-    WARN("skipped: xvfb-run not found (apt-get install xvfb xauth)");
-    return;
-  }
+  if (skip_without_xvfb()) return;
   TempDir dir("chainbreak-view");
   // Set from the script (slider edits restart the run), then play: displayed frames 0..40
   // each advance one frame before they are drawn, so frame 40 shows tau = 41 * 0.2 = 8.2.
@@ -136,10 +133,7 @@ TEST_CASE("with the overlay, the view's frame is the rendered video's frame", "[
 }
 
 TEST_CASE("record writes the session as an MP4", "[viewer][xvfb]") {
-  if (!have_xvfb()) {
-    WARN("skipped: xvfb-run not found (apt-get install xvfb xauth)");
-    return;
-  }
+  if (skip_without_xvfb()) return;
   TempDir dir("chainbreak-view");
   write_file(dir.file("s.txt"),
              "0 play\n0 record " + dir.file("session.mp4") + "\n12 record stop\n12 quit\n");
