@@ -96,6 +96,7 @@ const char* next_view(const std::string& view) {
 
 void draw_controls(ViewerModel& model, SceneDesc& draft, const Session& session,
                    ViewerRequests& requests) {
+  if (!model.show_controls) return;
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowBgAlpha(0.85f);
   ImGui::Begin("chainbreak", nullptr, ImGuiWindowFlags_AlwaysAutoResize);

@@ -26,6 +26,7 @@ inline constexpr Shortcut kShortcuts[] = {
     {"M", "record: start / stop a video (MP4)"},
     {"Ctrl+S", "save the settings as a scene file"},
     {"Click a spring", "pin its phi(tau) plot (click empty space to unpin)"},
+    {"Tab", "hide / show the controls"},
     {"H or F1", "this help"},
     {"Esc or Q", "quit"},
 };

@@ -48,6 +48,9 @@ std::vector<ScriptAction> parse_script(const std::string& text, const std::strin
     const std::string& act = a.action;
     if (act == "set") {
       if (!(words >> a.key >> a.argument)) fail("set needs KEY VALUE, e.g. 0 set speed 10");
+      if (a.key == "view" && a.argument != "longitudinal" && a.argument != "transverse" &&
+          a.argument != "both")
+        fail("set view needs longitudinal, transverse or both, got '" + a.argument + "'");
       if (!known_key(a.key))
         fail("unknown setting '" + a.key +
              "'; expected speed, beads, gamma, threshold, beta, amplitude, period, t0 or view");

@@ -33,6 +33,7 @@ void handle_shortcuts(ViewerModel& model, SceneDesc& draft, ViewerRequests& requ
   }
   if (pressed(GLFW_KEY_P)) requests.snapshot = true;
   if (pressed(GLFW_KEY_M)) requests.record = true;
+  if (pressed(GLFW_KEY_TAB)) model.show_controls = !model.show_controls;
   if (pressed(GLFW_KEY_H) || pressed(GLFW_KEY_F1)) model.show_help = !model.show_help;
   if (pressed(GLFW_KEY_ESCAPE) || pressed(GLFW_KEY_Q)) requests.quit = true;
 }

@@ -1,5 +1,5 @@
-// The viewer's loop (viewer.h). Index: settings from the script; the Viewer (requests,
-// physics, drawing, one frame); run_viewer.
+// The viewer's loop (viewer.h). Index: the Viewer (requests, physics, outputs, the copy into
+// the window, one frame); run_viewer.
 #include "viewer/viewer.h"
 
 #include <imgui.h>
@@ -14,10 +14,12 @@
 #include "output/output_file.h"
 #include "overlay/overlay.h"
 #include "render/renderer.h"
+#include "scene/scene_writer.h"
 #include "viewer/controls.h"
 #include "viewer/frame_times.h"
 #include "viewer/pacer.h"
 #include "viewer/script.h"
+#include "viewer/script_actions.h"
 #include "viewer/session.h"
 #include "viewer/spring_pick.h"
 #include "viewer/spring_plot.h"
@@ -28,52 +30,6 @@
 namespace cb {
 
 namespace {
-
-// A script's `set KEY VALUE`, as the matching control would do it.
-void apply_setting(const ScriptAction& a, SceneDesc& draft, ViewerModel& model,
-                   ViewerRequests& requests) {
-  if (a.key == "view") {
-    draft.render.view = a.argument;
-    requests.view_changed = true;
-    return;
-  }
-  char* end = nullptr;
-  const double v = std::strtod(a.argument.c_str(), &end);
-  if (*end != '\0' || !std::isfinite(v))
-    throw SceneError("script line " + std::to_string(a.line) + ": set " + a.key +
-                     " needs a number, got '" + a.argument + "'");
-  if (a.key == "speed") {
-    model.speed = v;
-    requests.speed_changed = true;
-    return;
-  }
-  if (a.key == "beads") draft.chain.beads = static_cast<int>(v);
-  if (a.key == "gamma") draft.chain.gamma = v;
-  if (a.key == "threshold") draft.chain.threshold = v;
-  if (a.key == "beta") draft.drive.beta = v;
-  if (a.key == "amplitude") draft.drive.amplitude = v;
-  if (a.key == "period") draft.drive.period = v;
-  if (a.key == "t0") draft.drive.t0 = v;
-  requests.apply_settings = true;
-}
-
-void apply_script(const std::vector<ScriptAction>& actions, SceneDesc& draft, ViewerModel& model,
-                  ViewerRequests& r) {
-  for (const ScriptAction& a : actions) {
-    if (a.action == "play") model.playing = true;
-    if (a.action == "pause") model.playing = false;
-    if (a.action == "step") r.step += std::max(1, std::atoi(a.argument.c_str()));
-    if (a.action == "restart") r.restart = true;
-    if (a.action == "quit") r.quit = true;
-    if (a.action == "set") apply_setting(a, draft, model, r);
-    if (a.action == "select") model.pinned_spring = std::atoi(a.argument.c_str());
-    if (a.action == "snapshot") r.snapshot = true, r.snapshot_path = a.argument;
-    if (a.action == "save") r.save = true, r.save_path = a.argument;
-    if (a.action == "screenshot") r.screenshot_path = a.argument;
-    if (a.action == "record" && (a.argument == "stop") == model.recording)
-      r.record = true, r.record_path = a.argument == "stop" ? "" : a.argument;
-  }
-}
 
 struct Viewer {
   const ViewerOptions& options;
@@ -114,8 +70,18 @@ struct Viewer {
   void apply(ViewerRequests& r) {
     if (r.apply_settings) {
       draft.render.speed = model.speed;
-      session.scene() = draft;
-      r.restart = true;
+      try {
+        // Through the scene file's own checks (N, gamma, phi_c, dt's stability limit...), so
+        // an edit is held to the rules a scene file is, with the same messages.
+        SceneDesc checked = parse_scene(write_scene(draft), "the viewer's settings");
+        checked.path = session.scene().path;
+        checked.name = session.scene().name;
+        session.scene() = std::move(checked);
+        r.restart = true;
+      } catch (const std::exception& e) {
+        model.status = e.what();
+        draft = session.scene();  // the controls show what runs
+      }
     }
     if (r.restart) {
       session.scene().render.speed = model.speed;
@@ -200,6 +166,45 @@ struct Viewer {
     if (ImGui::IsMouseClicked(0)) model.pinned_spring = model.hovered_spring;
   }
 
+  // Snapshot and recording: the frame's pixels, from the renderer's framebuffer.
+  void write_outputs(const ViewerRequests& r) {
+    Image image;
+    renderer.read(image);
+    if (r.snapshot) model.status = outputs.snapshot(image, session.tau(), r.snapshot_path);
+    if (r.record) {
+      const int fps = static_cast<int>(std::lround(session.plan().frame.fps));
+      model.status = outputs.recording()
+                         ? outputs.stop_recording()
+                         : outputs.start_recording(image.width, image.height, fps, r.record_path);
+    }
+    if (outputs.recording()) {
+      try {
+        outputs.push(std::move(image));
+      } catch (const OutputError& e) {
+        model.status = std::string("record failed: ") + e.what();
+        outputs.stop_recording();
+      }
+    }
+    model.recording = outputs.recording();
+  }
+
+  // The renderer's framebuffer into the window's, scaled to `rect`.
+  void copy_to_window(unsigned source, int fb_w, int fb_h, const int rect[4]) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, source);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glDisable(GL_SCISSOR_TEST);
+    // llvmpipe pays per pixel: clear only the bars around a letterboxed frame, and copy 1:1
+    // without filtering when the window has the frame's size.
+    const bool whole = rect[0] == 0 && rect[1] == 0 && rect[2] == fb_w && rect[3] == fb_h;
+    if (!whole) {
+      glClearColor(0, 0, 0, 1);
+      glClear(GL_COLOR_BUFFER_BIT);
+    }
+    const bool one_to_one = rect[2] - rect[0] == renderer.width();
+    glBlitFramebuffer(0, 0, renderer.width(), renderer.height(), rect[0], rect[1], rect[2], rect[3],
+                      GL_COLOR_BUFFER_BIT, one_to_one ? GL_NEAREST : GL_LINEAR);
+  }
+
   void frame(double frame_start) {
     window.poll();
     ViewerRequests r;
@@ -213,53 +218,22 @@ struct Viewer {
     const double physics_done = Window::now();
 
     const RenderSnapshot snap = session.snapshot();
-    renderer.draw(snap);
-    if (overlay) overlay->draw(snap);
-    // Wait for the software rasteriser here: its threads then do not compete with this one's
-    // next work. Measured at 1080p, N = 1000, under Xvfb on 2 busy cores: 35-38 fps without,
-    // 34-54 fps with (tests/bench/README.md). It also puts the drawing in the draw phase.
-    glFinish();
-    const double draw_done = Window::now();
-    if (r.snapshot || r.record || outputs.recording()) {
-      Image image;
-      renderer.read(image);
-      if (r.snapshot) model.status = outputs.snapshot(image, session.tau(), r.snapshot_path);
-      if (r.record) {
-        model.status =
-            outputs.recording()
-                ? outputs.stop_recording()
-                : outputs.start_recording(image.width, image.height,
-                                          static_cast<int>(std::lround(session.plan().frame.fps)),
-                                          r.record_path);
-      }
-      if (outputs.recording()) {
-        try {
-          outputs.push(std::move(image));
-        } catch (const OutputError& e) {
-          model.status = std::string("record failed: ") + e.what();
-          outputs.stop_recording();
-        }
-      }
-      model.recording = outputs.recording();
-    }
-    GLint source = 0;
-    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &source);
     int fb_w = 0, fb_h = 0, rect[4];
     window.framebuffer_size(fb_w, fb_h);
     frame_rect(fb_w, fb_h, rect);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(source));
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    glDisable(GL_SCISSOR_TEST);
-    // llvmpipe pays per pixel: clear only the bars around a letterboxed frame, and copy 1:1
-    // without filtering when the window has the frame's size.
-    const bool whole = rect[0] == 0 && rect[1] == 0 && rect[2] == fb_w && rect[3] == fb_h;
-    if (!whole) {
-      glClearColor(0, 0, 0, 1);
-      glClear(GL_COLOR_BUFFER_BIT);
-    }
-    const bool one_to_one = rect[2] - rect[0] == renderer.width();
-    glBlitFramebuffer(0, 0, renderer.width(), renderer.height(), rect[0], rect[1], rect[2], rect[3],
-                      GL_COLOR_BUFFER_BIT, one_to_one ? GL_NEAREST : GL_LINEAR);
+    // Drawn off screen, then copied into the window. Drawing straight into the window's
+    // framebuffer (tried: a Renderer::draw_into) was slower on llvmpipe under Xvfb, 17 ms
+    // against 5 ms for the drawing, more than the ~6 ms copy it saves.
+    renderer.draw(snap);  // binds the renderer's framebuffer, where the overlay draws too
+    if (overlay) overlay->draw(snap);
+    // Wait for the software rasteriser here: its threads then do not compete with this one's
+    // next work (tests/bench/README.md). It also puts the drawing in the draw phase.
+    glFinish();
+    const double draw_done = Window::now();
+    GLint frame_buffer = 0;
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &frame_buffer);
+    if (r.snapshot || r.record || outputs.recording()) write_outputs(r);
+    copy_to_window(static_cast<unsigned>(frame_buffer), fb_w, fb_h, rect);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, fb_w, fb_h);
 

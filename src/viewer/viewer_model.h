@@ -11,8 +11,9 @@ struct ViewerModel {
   bool playing = false;
   double speed = 10.0;  // tau per second of wall time (script mode: per 1/fps of a frame)
   bool show_help = false;
-  int hovered_spring = 0;  // under the mouse (0: none)
-  int pinned_spring = 0;   // clicked, or `select` in a script; the plot shows it before hover
+  bool show_controls = true;  // Tab hides them: the chain alone, as on the video
+  int hovered_spring = 0;     // under the mouse (0: none)
+  int pinned_spring = 0;      // clicked, or `select` in a script; the plot shows it before hover
   bool recording = false;
   // Reported by the loop, shown by the controls.
   bool script = false;          // driven by --script: fixed tau per frame
