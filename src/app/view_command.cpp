@@ -9,6 +9,7 @@
 // is the same whether or not the viewer was built) and replaces itself with the viewer.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -38,7 +39,10 @@ bool has_display() {
 }  // namespace
 
 int view_command(const ViewOptions& o) {
-  if (!has_display()) {
+  // --help needs no window: the viewer prints its options wherever it runs.
+  const bool help = std::any_of(o.args.begin(), o.args.end(),
+                                [](const std::string& a) { return a == "-h" || a == "--help"; });
+  if (!help && !has_display()) {
     std::fprintf(stderr, "%s", kNoDisplayMessage);
     return 1;
   }
