@@ -42,6 +42,15 @@ void write_file(const std::string& path, const std::string& text) {
   std::ofstream(path) << text;
 }
 
+// Writes `script` into the folder and runs `view ARGS --script` on it under Xvfb; it must
+// quit with status 0.
+void run_script(const TempDir& dir, const std::string& script, const std::string& args) {
+  write_file(dir.file("s.txt"), script);
+  const auto view = view_under_xvfb(args + " --script " + dir.file("s.txt"));
+  INFO(view.err);
+  REQUIRE(view.status == 0);
+}
+
 // The tolerance: the viewer draws with the same renderer, snapshot and overlay code into its
 // own framebuffer; only the GL driver's entry point differs (GLX against OSMesa/EGL, both
 // llvmpipe). Measured: byte-identical PNGs. Allowed: channel differences up to 2 (one
@@ -91,12 +100,10 @@ TEST_CASE("a scripted view snapshot matches the headless snapshot at the same ta
   if (skip_without_xvfb()) return;
   TempDir dir("chainbreak-view");
   // 100 frames of 0.2 tau: tau = 20. Then the snapshot, a saved scene and quit.
-  write_file(dir.file("s.txt"), "0 play\n100 pause\n100 snapshot " + dir.file("view.png") +
-                                    "\n100 save " + dir.file("saved.toml") + "\n100 quit\n");
-  const auto view =
-      view_under_xvfb(kScene + " " + kSets + " --no-overlay --script " + dir.file("s.txt"));
-  INFO(view.err);
-  REQUIRE(view.status == 0);
+  run_script(dir,
+             "0 play\n100 pause\n100 snapshot " + dir.file("view.png") + "\n100 save " +
+                 dir.file("saved.toml") + "\n100 quit\n",
+             kScene + " " + kSets + " --no-overlay");
   REQUIRE(std::filesystem::exists(dir.file("view.png")));
   const auto snap =
       run_chainbreak("snapshot " + kScene + " " + kSets + " --at 20 -o " + dir.path.string());
@@ -115,12 +122,9 @@ TEST_CASE("with the overlay, the view's frame is the rendered video's frame", "[
   TempDir dir("chainbreak-view");
   // Set from the script (slider edits restart the run), then play: displayed frames 0..40
   // each advance one frame before they are drawn, so frame 40 shows tau = 41 * 0.2 = 8.2.
-  write_file(dir.file("s.txt"),
-             "0 set gamma 0.01\n0 play\n40 snapshot " + dir.file("view.png") + "\n40 quit\n");
   const std::string size = " --size 960x540";
-  const auto view = view_under_xvfb(kScene + " " + kSets + size + " --script " + dir.file("s.txt"));
-  INFO(view.err);
-  REQUIRE(view.status == 0);
+  run_script(dir, "0 set gamma 0.01\n0 play\n40 snapshot " + dir.file("view.png") + "\n40 quit\n",
+             kScene + " " + kSets + size);
   std::filesystem::create_directories(dir.file("frames"));
   const auto render =
       run_chainbreak("render " + kScene + " " + kSets + size +
@@ -135,12 +139,8 @@ TEST_CASE("with the overlay, the view's frame is the rendered video's frame", "[
 TEST_CASE("record writes the session as an MP4", "[viewer][xvfb]") {
   if (skip_without_xvfb()) return;
   TempDir dir("chainbreak-view");
-  write_file(dir.file("s.txt"),
-             "0 play\n0 record " + dir.file("session.mp4") + "\n12 record stop\n12 quit\n");
-  const auto view =
-      view_under_xvfb(kScene + " " + kSets + " --size 640x360 --script " + dir.file("s.txt"));
-  INFO(view.err);
-  REQUIRE(view.status == 0);
+  run_script(dir, "0 play\n0 record " + dir.file("session.mp4") + "\n12 record stop\n12 quit\n",
+             kScene + " " + kSets + " --size 640x360");
   // Frames 0..11 were recorded (the stop at frame 12 comes before its frame is pushed).
   REQUIRE(std::filesystem::exists(dir.file("session.mp4")));
   const cb::test::Decoded video = cb::test::decode(dir.file("session.mp4"), -1);
