@@ -4,12 +4,14 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "drive/drive.h"
 #include "physics/integrator.h"
 #include "scene/scene.h"
 #include "snapshot/snapshot.h"
 #include "viewer/pacer.h"
 #include "viewer/phi_history.h"
 #include "viewer/script.h"
+#include "viewer/session.h"
 #include "viewer/spring_pick.h"
 
 TEST_CASE("the pacer advances grid frames with wall time at the chosen speed", "[viewer]") {
@@ -122,4 +124,33 @@ TEST_CASE("the spring under a point is the one between its two beads", "[viewer]
   CHECK(cb::spring_at(layout, state, layout.x_wall + 0.5f * panel.spacing, y) == 1);
   CHECK(cb::spring_at(layout, state, x, panel.bottom + 5) == 0);   // below the chain's panel
   CHECK(cb::spring_at(layout, state, layout.x_wall - 5, y) == 0);  // behind the wall
+}
+
+TEST_CASE("the session steps on render's frame grid, restarts and changes the view", "[viewer]") {
+  // 12 tau/s at 60 fps: 0.2 tau a frame, 20 steps of the scene's dt = 0.01, as `render` plans.
+  cb::RenderOptions options;
+  options.no_overlay = true;
+  const cb::SceneDesc scene =
+      cb::load_scene(std::string(CHAINBREAK_SCENES) + "/anomalous_breaking.toml",
+                     {{"render.speed", "12"}, {"integrator.t_end", "20"}});
+  cb::Session session(scene, options);
+  CHECK(session.plan().substeps == 20);
+  CHECK(session.plan().frames == 101);
+  session.advance(100);
+  CHECK(session.frame() == 100);
+  CHECK(session.at_end());
+  session.advance(5);  // the run ends at t_end: nothing more
+  CHECK(session.frame() == 100);
+
+  // The same state as the integrator stepped 2000 times on its own (bit for bit).
+  cb::Integrator reference(scene.chain, cb::make_forcing(scene.drive), {0.01, 1});
+  REQUIRE(reference.advance_to(2000));
+  CHECK(session.state().psi == reference.state().psi);
+  CHECK(session.phi_history().rows() == 101);
+
+  session.set_view("both");
+  CHECK(session.snapshot().layout.panel_count == 2);
+  session.restart();
+  CHECK(session.frame() == 0);
+  CHECK(session.state().psi == std::vector<double>(30, 0.0));
 }
