@@ -21,11 +21,18 @@ int spring_at(const SnapshotLayout& layout, const ChainState& state, float x, fl
     const PanelLayout& panel = layout.panels[p];
     if (y < panel.top || y > panel.bottom) continue;
     for (int j = 1; j <= beads; ++j) {
-      const float a = bead_x(layout, panel, state, j - 1), b = bead_x(layout, panel, state, j);
-      if (x >= std::min(a, b) && x <= std::max(a, b)) return j;
+      const SpringSpan span = spring_span(layout, state, p, j);
+      if (x >= span.x0 && x <= span.x1) return j;
     }
   }
   return 0;
+}
+
+SpringSpan spring_span(const SnapshotLayout& layout, const ChainState& state, int panel,
+                       int spring) {
+  const PanelLayout& p = layout.panels[panel];
+  const float a = bead_x(layout, p, state, spring - 1), b = bead_x(layout, p, state, spring);
+  return {std::min(a, b), std::max(a, b), p.top, p.bottom};
 }
 
 }  // namespace cb

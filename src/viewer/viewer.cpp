@@ -57,6 +57,7 @@ struct Viewer {
         renderer(session.plan().frame.width, session.plan().frame.height),
         outputs(o.out_dir, scene.name) {
     const RenderPlan& p = session.plan();
+    draft.render.view = p.frame.view;  // --view, when given, over the scene's
     if (p.overlay_layout.enabled)
       overlay = std::make_unique<Overlay>(p.frame.width, p.frame.height, p.frame.fps, p.overlay);
     if (!o.script.empty()) script.emplace(std::move(actions));
@@ -166,6 +167,26 @@ struct Viewer {
     if (ImGui::IsMouseClicked(0)) model.pinned_spring = model.hovered_spring;
   }
 
+  // A frame around the plotted spring, on the window only (snapshots and videos stay clean).
+  void highlight(const RenderSnapshot& snap, const int rect[4], int fb_h, int spring) {
+    if (spring < 1 || spring > static_cast<int>(session.state().psi.size())) return;
+    const ImGuiIO& io = ImGui::GetIO();
+    const float scale =
+        static_cast<float>(rect[2] - rect[0]) / static_cast<float>(renderer.width());
+    const float left = static_cast<float>(rect[0]) / io.DisplayFramebufferScale.x;
+    const float top = static_cast<float>(fb_h - rect[3]) / io.DisplayFramebufferScale.y;
+    for (int p = 0; p < snap.layout.panel_count; ++p) {
+      const SpringSpan s = spring_span(snap.layout, session.state(), p, spring);
+      const float pad = 3.0f;
+      ImGui::GetBackgroundDrawList()->AddRect(
+          ImVec2(left + s.x0 * scale / io.DisplayFramebufferScale.x - pad,
+                 top + s.top * scale / io.DisplayFramebufferScale.y),
+          ImVec2(left + s.x1 * scale / io.DisplayFramebufferScale.x + pad,
+                 top + s.bottom * scale / io.DisplayFramebufferScale.y),
+          IM_COL32(240, 228, 66, 200), 3.0f, 0, 2.0f);
+    }
+  }
+
   // Snapshot and recording: the frame's pixels, from the renderer's framebuffer.
   void write_outputs(const ViewerRequests& r) {
     Image image;
@@ -238,7 +259,9 @@ struct Viewer {
     glViewport(0, 0, fb_w, fb_h);
 
     pick(snap, rect, fb_h);
-    plot.draw(session, model.hovered_spring ? model.hovered_spring : model.pinned_spring);
+    const int plotted = model.hovered_spring ? model.hovered_spring : model.pinned_spring;
+    highlight(snap, rect, fb_h, plotted);
+    plot.draw(session, plotted);
     ui.end_frame();
     if (!r.screenshot_path.empty())
       model.status = outputs.snapshot(window.read_back_buffer(), session.tau(), r.screenshot_path);
