@@ -62,9 +62,9 @@ void SpringPlot::draw(const Session& session, int spring) {
     hi = std::max(hi, static_cast<float>(phi_c));
   }
   if (hi - lo < 1e-9f) hi = lo + 1.0f;
-  const double tau_end =
-      static_cast<double>(session.plan().frames - 1) * session.plan().tau_per_frame;
-
+  // The time axis grows with the run (0 to now): the whole video's span would squeeze the
+  // early part a lecturer is looking at into a sliver.
+  const double tau_end = std::max(h.tau(h.rows() - 1), session.plan().tau_per_frame);
   const ImGuiIO& io = ImGui::GetIO();
   ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - 470, 10), ImGuiCond_FirstUseEver);
   ImGui::Begin("Spring", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
@@ -96,7 +96,15 @@ void SpringPlot::draw(const Session& session, int spring) {
     if (std::isfinite(phi))
       draw->AddCircleFilled(ImVec2(px(h.tau(r)), py(phi)), 1.8f, IM_COL32(240, 228, 66, 255));
   }
-  ImGui::Text("phi now %.4g   range [%.3g, %.3g]%s", h.phi(spring, h.rows() - 1), lo, hi,
+  const float now = h.phi(spring, h.rows() - 1);
+  if (std::isfinite(now)) {
+    ImGui::Text("phi now %.4g", now);
+  } else {
+    for (const BreakEvent& b : session.state().breaks)
+      if (b.spring == spring) ImGui::Text("broke at tau = %.3f", b.tau);
+  }
+  ImGui::SameLine();
+  ImGui::Text("  range [%.3g, %.3g]%s", lo, hi,
               exact_ ? "" : "   (no exact line: N > 1024 or an expression drive)");
   ImGui::End();
 }

@@ -4,7 +4,12 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include <cstdlib>
+#include <filesystem>
 #include <stdexcept>
+#include <string>
+
+#include "overlay/overlay.h"
 
 namespace cb {
 
@@ -14,6 +19,12 @@ UiContext::UiContext(GLFWwindow* window) {
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;  // no imgui.ini left in the user's folder
   ImGui::StyleColorsDark();
+  // The overlay's DejaVu Sans, larger than ImGui's built-in 13 px bitmap font: readable from
+  // the back of a lecture hall. Without the font file the built-in one does.
+  const char* dir = std::getenv("CHAINBREAK_FONT_DIR");
+  const std::string font =
+      (std::filesystem::path(dir && *dir ? dir : kOverlayFontDir) / "DejaVuSans.ttf").string();
+  if (std::filesystem::is_regular_file(font)) io.Fonts->AddFontFromFileTTF(font.c_str(), 17.0f);
   platform_ = ImGui_ImplGlfw_InitForOpenGL(window, true);
   renderer_ = platform_ && ImGui_ImplOpenGL3_Init("#version 330");
   if (!renderer_) {
