@@ -8,6 +8,7 @@
 #include "physics/integrator.h"
 #include "scene/scene.h"
 #include "snapshot/snapshot.h"
+#include "viewer/frame_placement.h"
 #include "viewer/pacer.h"
 #include "viewer/phi_history.h"
 #include "viewer/script.h"
@@ -153,4 +154,22 @@ TEST_CASE("the session steps on render's frame grid, restarts and changes the vi
   session.restart();
   CHECK(session.frame() == 0);
   CHECK(session.state().psi == std::vector<double>(30, 0.0));
+}
+
+TEST_CASE("the frame sits in the window as large as fits, centred, and maps both ways",
+          "[viewer]") {
+  const cb::FramePlacement same = cb::place_frame(1920, 1080, 1920, 1080);
+  CHECK(same.fills_window());
+  CHECK(same.one_to_one());
+  // A 16:9 frame in a 4:3 window: full width, bars above and below.
+  const cb::FramePlacement p = cb::place_frame(1920, 1080, 1024, 768);
+  CHECK(p.width == 1024);
+  CHECK(p.height == 576);
+  CHECK(p.x == 0);
+  CHECK(p.y == 96);
+  CHECK(p.gl_bottom() == 96);
+  CHECK_FALSE(p.fills_window());
+  CHECK(p.frame_x(512.0f) == Approx(960.0f));
+  CHECK(p.frame_y(96.0f) == Approx(0.0f));
+  CHECK(p.window_y(p.frame_y(400.0f)) == Approx(400.0f));
 }

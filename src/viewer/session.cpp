@@ -14,10 +14,14 @@ Session::~Session() = default;
 void Session::restart() {
   // The plan's frame grid follows the speed asked for now: a recording then plays at it.
   options_.speed = scene_.render.speed;
-  plan_ = plan_render(scene_, options_);
-  measure_plan(scene_, plan_);
-  sim_ = std::make_unique<Integrator>(scene_.chain, make_forcing(scene_.drive),
-                                      IntegratorOptions{plan_.dt, 1});
+  // Everything that can throw (a bad setting, a drive that does not compile, a pre-pass that
+  // blows up) happens before anything is replaced: a failed restart leaves the run as it was.
+  RenderPlan plan = plan_render(scene_, options_);
+  measure_plan(scene_, plan);
+  auto sim = std::make_unique<Integrator>(scene_.chain, make_forcing(scene_.drive),
+                                          IntegratorOptions{plan.dt, 1});
+  plan_ = std::move(plan);
+  sim_ = std::move(sim);
   history_.reset();
   if (plan_.overlay_layout.enabled)
     history_ = std::make_unique<OverlayHistory>(scene_.chain, scene_.drive, plan_.overlay_setup);

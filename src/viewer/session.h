@@ -28,6 +28,8 @@ class Session {
   ~Session();
 
   // Starts again from tau = 0 with the scene as edited (re-plans: the pre-pass runs again).
+  // Throws (SceneError, DriveError, std::runtime_error) with the run left as it was; the
+  // caller then puts the scene back (scene() = what it was).
   void restart();
   // Only the view changed: new layout, same run.
   void set_view(const std::string& view);

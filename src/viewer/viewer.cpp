@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
+#include <utility>
 
 #include "app/frames.h"
 #include "gl/gl_loader.h"
@@ -16,6 +17,7 @@
 #include "render/renderer.h"
 #include "scene/scene_writer.h"
 #include "viewer/controls.h"
+#include "viewer/frame_placement.h"
 #include "viewer/frame_times.h"
 #include "viewer/pacer.h"
 #include "viewer/script.h"
@@ -68,31 +70,38 @@ struct Viewer {
     pacer.reset(Window::now(), 0, model.speed, p.tau_per_frame);
   }
 
-  void apply(ViewerRequests& r) {
-    if (r.apply_settings) {
-      draft.render.speed = model.speed;
-      try {
-        // Through the scene file's own checks (N, gamma, phi_c, dt's stability limit...), so
-        // an edit is held to the rules a scene file is, with the same messages.
-        SceneDesc checked = parse_scene(write_scene(draft), "the viewer's settings");
-        checked.path = session.scene().path;
-        checked.name = session.scene().name;
-        session.scene() = std::move(checked);
-        r.restart = true;
-      } catch (const std::exception& e) {
-        model.status = e.what();
-        draft = session.scene();  // the controls show what runs
+  // From tau = 0, with the draft's chain and drive when `apply_draft`: checked by the scene
+  // file's own rules first (N, gamma, phi_c, dt's stability limit...), with the same messages.
+  // On any failure the run and the controls stay as they were and the panel says why.
+  void restart(bool apply_draft) {
+    try {
+      SceneDesc next = session.scene();
+      if (apply_draft) {
+        next = parse_scene(write_scene(draft), "the viewer's settings");
+        next.path = session.scene().path;
+        next.name = session.scene().name;
       }
-    }
-    if (r.restart) {
-      session.scene().render.speed = model.speed;
+      next.render.speed = model.speed;
+      SceneDesc previous = std::exchange(session.scene(), std::move(next));
       try {
         session.restart();
-      } catch (const std::exception& e) {  // a setting the scene's rules reject
-        model.status = e.what();
-        draft = session.scene();
+      } catch (...) {
+        session.scene() = std::move(previous);
+        throw;
       }
-      plot.reset();
+      if (apply_draft) model.status.clear();  // an earlier rejected edit is no longer news
+    } catch (const std::exception& e) {
+      model.status = e.what();
+      const std::string view = draft.render.view;  // the view is not part of a restart
+      draft = session.scene();
+      draft.render.view = view;
+    }
+    plot.reset();
+  }
+
+  void apply(ViewerRequests& r) {
+    if (r.apply_settings || r.restart) {
+      restart(r.apply_settings);
       r.speed_changed = true;
     }
     if (r.view_changed) session.set_view(draft.render.view);
@@ -139,50 +148,28 @@ struct Viewer {
     model.achieved_ratio = pacer.achieved_ratio();
   }
 
-  // The frame's rectangle in the window: as large as fits, aspect kept, centred.
-  void frame_rect(int fb_w, int fb_h, int rect[4]) const {
-    const double scale = std::min(static_cast<double>(fb_w) / renderer.width(),
-                                  static_cast<double>(fb_h) / renderer.height());
-    const int w = static_cast<int>(renderer.width() * scale);
-    const int h = static_cast<int>(renderer.height() * scale);
-    rect[0] = (fb_w - w) / 2;
-    rect[1] = (fb_h - h) / 2;
-    rect[2] = rect[0] + w;
-    rect[3] = rect[1] + h;
-  }
-
   // Hover and click: the spring under the mouse, in the frame's pixels.
-  void pick(const RenderSnapshot& snap, const int rect[4], int fb_h) {
+  void pick(const RenderSnapshot& snap, const FramePlacement& place) {
     const ImGuiIO& io = ImGui::GetIO();
     model.hovered_spring = 0;
-    if (io.WantCaptureMouse || rect[2] <= rect[0]) return;
-    const float mx = io.MousePos.x * io.DisplayFramebufferScale.x;
-    const float my = io.MousePos.y * io.DisplayFramebufferScale.y;
-    const float scale =
-        static_cast<float>(renderer.width()) / static_cast<float>(rect[2] - rect[0]);
-    // GL's rectangle is bottom-up; the frame's pixels are top-down.
-    const float x = (mx - rect[0]) * scale;
-    const float y = (my - (fb_h - rect[3])) * scale;
+    if (io.WantCaptureMouse) return;
+    const float x = place.frame_x(io.MousePos.x * io.DisplayFramebufferScale.x);
+    const float y = place.frame_y(io.MousePos.y * io.DisplayFramebufferScale.y);
     model.hovered_spring = spring_at(snap.layout, session.state(), x, y);
     if (ImGui::IsMouseClicked(0)) model.pinned_spring = model.hovered_spring;
   }
 
   // A frame around the plotted spring, on the window only (snapshots and videos stay clean).
-  void highlight(const RenderSnapshot& snap, const int rect[4], int fb_h, int spring) {
+  void highlight(const RenderSnapshot& snap, const FramePlacement& place, int spring) {
     if (spring < 1 || spring > static_cast<int>(session.state().psi.size())) return;
-    const ImGuiIO& io = ImGui::GetIO();
-    const float scale =
-        static_cast<float>(rect[2] - rect[0]) / static_cast<float>(renderer.width());
-    const float left = static_cast<float>(rect[0]) / io.DisplayFramebufferScale.x;
-    const float top = static_cast<float>(fb_h - rect[3]) / io.DisplayFramebufferScale.y;
+    const ImVec2 to_ui(1.0f / ImGui::GetIO().DisplayFramebufferScale.x,
+                       1.0f / ImGui::GetIO().DisplayFramebufferScale.y);
     for (int p = 0; p < snap.layout.panel_count; ++p) {
       const SpringSpan s = spring_span(snap.layout, session.state(), p, spring);
       const float pad = 3.0f;
       ImGui::GetBackgroundDrawList()->AddRect(
-          ImVec2(left + s.x0 * scale / io.DisplayFramebufferScale.x - pad,
-                 top + s.top * scale / io.DisplayFramebufferScale.y),
-          ImVec2(left + s.x1 * scale / io.DisplayFramebufferScale.x + pad,
-                 top + s.bottom * scale / io.DisplayFramebufferScale.y),
+          ImVec2(place.window_x(s.x0) * to_ui.x - pad, place.window_y(s.top) * to_ui.y),
+          ImVec2(place.window_x(s.x1) * to_ui.x + pad, place.window_y(s.bottom) * to_ui.y),
           IM_COL32(240, 228, 66, 200), 3.0f, 0, 2.0f);
     }
   }
@@ -209,21 +196,21 @@ struct Viewer {
     model.recording = outputs.recording();
   }
 
-  // The renderer's framebuffer into the window's, scaled to `rect`.
-  void copy_to_window(unsigned source, int fb_w, int fb_h, const int rect[4]) {
+  // The renderer's framebuffer into the window's, where `place` puts it.
+  void copy_to_window(unsigned source, const FramePlacement& place) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, source);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     glDisable(GL_SCISSOR_TEST);
     // llvmpipe pays per pixel: clear only the bars around a letterboxed frame, and copy 1:1
     // without filtering when the window has the frame's size.
-    const bool whole = rect[0] == 0 && rect[1] == 0 && rect[2] == fb_w && rect[3] == fb_h;
-    if (!whole) {
+    if (!place.fills_window()) {
       glClearColor(0, 0, 0, 1);
       glClear(GL_COLOR_BUFFER_BIT);
     }
-    const bool one_to_one = rect[2] - rect[0] == renderer.width();
-    glBlitFramebuffer(0, 0, renderer.width(), renderer.height(), rect[0], rect[1], rect[2], rect[3],
-                      GL_COLOR_BUFFER_BIT, one_to_one ? GL_NEAREST : GL_LINEAR);
+    const int bottom = place.gl_bottom();
+    glBlitFramebuffer(0, 0, place.frame_width, place.frame_height, place.x, bottom,
+                      place.x + place.width, bottom + place.height, GL_COLOR_BUFFER_BIT,
+                      place.one_to_one() ? GL_NEAREST : GL_LINEAR);
   }
 
   void frame(double frame_start) {
@@ -239,9 +226,9 @@ struct Viewer {
     const double physics_done = Window::now();
 
     const RenderSnapshot snap = session.snapshot();
-    int fb_w = 0, fb_h = 0, rect[4];
+    int fb_w = 0, fb_h = 0;
     window.framebuffer_size(fb_w, fb_h);
-    frame_rect(fb_w, fb_h, rect);
+    const FramePlacement place = place_frame(renderer.width(), renderer.height(), fb_w, fb_h);
     // Drawn off screen, then copied into the window. Drawing straight into the window's
     // framebuffer (tried: a Renderer::draw_into) was slower on llvmpipe under Xvfb, 17 ms
     // against 5 ms for the drawing, more than the ~6 ms copy it saves.
@@ -254,13 +241,13 @@ struct Viewer {
     GLint frame_buffer = 0;
     glGetIntegerv(GL_FRAMEBUFFER_BINDING, &frame_buffer);
     if (r.snapshot || r.record || outputs.recording()) write_outputs(r);
-    copy_to_window(static_cast<unsigned>(frame_buffer), fb_w, fb_h, rect);
+    copy_to_window(static_cast<unsigned>(frame_buffer), place);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, fb_w, fb_h);
 
-    pick(snap, rect, fb_h);
+    pick(snap, place);
     const int plotted = model.hovered_spring ? model.hovered_spring : model.pinned_spring;
-    highlight(snap, rect, fb_h, plotted);
+    highlight(snap, place, plotted);
     plot.draw(session, plotted);
     ui.end_frame();
     if (!r.screenshot_path.empty())
