@@ -85,6 +85,15 @@ TEST_CASE("view without a display says so and points to render and snapshot", "[
   CHECK_THAT(direct.err, Catch::Contains("chainbreak render"));
 }
 
+TEST_CASE("the headless program does not link GLFW; only the viewer does", "[viewer][cli]") {
+  // So `run`, `sweep`, `snapshot` and `render` start where GLFW is not installed.
+  const auto headless = run_shell("ldd " + std::string(CHAINBREAK_EXE));
+  REQUIRE(headless.status == 0);
+  CHECK(headless.out.find("libglfw") == std::string::npos);
+  const auto viewer = run_shell("ldd " + std::string(CHAINBREAK_VIEWER_EXE));
+  CHECK(viewer.out.find("libglfw") != std::string::npos);
+}
+
 TEST_CASE("a bad script line is reported before any window opens", "[viewer][cli]") {
   TempDir dir("chainbreak-view");
   write_file(dir.file("s.txt"), "0 play\n5 fly away\n");
