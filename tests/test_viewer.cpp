@@ -131,7 +131,8 @@ TEST_CASE("with the overlay, the view's frame is the rendered video's frame", "[
   TempDir dir("chainbreak-view");
   // Set from the script (slider edits restart the run), then play: displayed frames 0..40
   // each advance one frame before they are drawn, so frame 40 shows tau = 41 * 0.2 = 8.2.
-  const std::string size = " --size 960x540";
+  // t_end = 10: a 51-frame video is enough (the layout still spans the whole run).
+  const std::string size = " --size 960x540 --set integrator.t_end=10";
   run_script(dir, "0 set gamma 0.01\n0 play\n40 snapshot " + dir.file("view.png") + "\n40 quit\n",
              kScene + " " + kSets + size);
   std::filesystem::create_directories(dir.file("frames"));
