@@ -280,7 +280,8 @@ int run_viewer(const ViewerOptions& o) {
   const bool unattended = !o.script.empty() || o.benchmark_frames > 0;
   Window window(frame.width, frame.height, "chainbreak: " + scene.title, !unattended);
   Viewer viewer(o, window, std::move(scene), std::move(actions));
-  while (!window.should_close()) viewer.frame(Window::now());
+  auto stopped = [&] { return o.stop && o.stop->load(); };
+  while (!window.should_close() && !stopped()) viewer.frame(Window::now());
 
   if (o.benchmark_frames > 0) {
     int fb_w = 0, fb_h = 0;

@@ -5,6 +5,7 @@
 // window, draw the controls on top.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -22,6 +23,9 @@ struct ViewerOptions {
   std::int64_t benchmark_frames = 0;  // > 0: play this many frames flat out, print timings
   std::string out_dir = "renders";
   bool play = false;  // start playing
+  // Set by a signal handler (Ctrl-C): the loop ends as if the window were closed, so a video
+  // being recorded is finished, not left as a temporary file.
+  const std::atomic<bool>* stop = nullptr;
 };
 
 // The exit status: 0 on quit, 1 when the physics failed in a script or benchmark run.

@@ -4,6 +4,8 @@
 // fail, or the physics fails in a script or benchmark run; 2 for a mistake in the scene,
 // the options or the script.
 #include <CLI/CLI.hpp>
+#include <atomic>
+#include <csignal>
 #include <cstdio>
 
 #include "drive/drive.h"
@@ -11,7 +13,19 @@
 #include "viewer/viewer.h"
 #include "viewer/window.h"
 
+namespace {
+
+std::atomic<bool> g_stop{false};
+
+void on_signal(int) {
+  g_stop = true;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
   CLI::App app{"chainbreak view: the chain in a window, with controls (needs a display)"};
   app.name("chainbreak view");
   cb::ViewerOptions o;
@@ -41,6 +55,7 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;
   }
+  o.stop = &g_stop;
   try {
     for (const auto& s : sets) o.overrides.push_back(cb::parse_override(s));
     return cb::run_viewer(o);
