@@ -85,7 +85,7 @@ TEST_CASE("view without a display says so and points to render and snapshot", "[
   CHECK_THAT(direct.err, Catch::Contains("chainbreak render"));
 }
 
-TEST_CASE("the headless program does not link GLFW; only the viewer does", "[viewer][cli]") {
+TEST_CASE("the headless program does not link GLFW, only the viewer does", "[viewer][cli]") {
   // So `run`, `sweep`, `snapshot` and `render` start where GLFW is not installed.
   const auto headless = run_shell("ldd " + std::string(CHAINBREAK_EXE));
   REQUIRE(headless.status == 0);
