@@ -56,10 +56,11 @@ struct RunResult {
   std::string out, err;
 };
 
-// Runs `chainbreak ARGS` through the shell (the arguments used in tests have no quotes).
-inline RunResult run_chainbreak(const std::string& args) {
+// Runs a shell command line (the arguments used in tests have no quotes): its exit status,
+// stdout and stderr.
+inline RunResult run_shell(const std::string& command) {
   const TempDir scratch("chainbreak-run");
-  const std::string cmd = std::string(CHAINBREAK_EXE) + " " + args + " 2>" + scratch.file("err");
+  const std::string cmd = command + " 2>" + scratch.file("err");
   RunResult r;
   FILE* pipe = ::popen(cmd.c_str(), "r");
   REQUIRE(pipe);
@@ -69,6 +70,11 @@ inline RunResult run_chainbreak(const std::string& args) {
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
   r.err = slurp(scratch.file("err"));
   return r;
+}
+
+// Runs `chainbreak ARGS` as a user would.
+inline RunResult run_chainbreak(const std::string& args) {
+  return run_shell(std::string(CHAINBREAK_EXE) + " " + args);
 }
 
 }  // namespace cb::test

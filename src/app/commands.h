@@ -78,4 +78,16 @@ struct FiguresOptions {
 };
 int figures_command(const FiguresOptions& options);
 
+// `view`: everything after the word goes to the viewer executable (src/viewer), which parses
+// it. Exit status 1 when there is no display (kNoDisplayMessage) or the viewer is missing.
+struct ViewOptions {
+  std::vector<std::string> args;
+};
+int view_command(const ViewOptions& options);
+inline constexpr const char* kNoDisplayMessage =
+    "chainbreak view: no display (neither DISPLAY nor WAYLAND_DISPLAY is set, or the display "
+    "cannot be opened). The viewer needs a window. Without a display, use `chainbreak render "
+    "SCENE` for a video or `chainbreak snapshot SCENE --at TAU` for PNGs; or run the viewer "
+    "under a virtual display: xvfb-run -a chainbreak view SCENE\n";
+
 }  // namespace cb

@@ -141,6 +141,13 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"auto", "osmesa", "egl"}));
   figures_cmd->add_flag("--quiet,-q", figures.quiet, "No progress output");
 
+  // `view`: the rest of the line goes to the viewer executable, --help included.
+  cb::ViewOptions view;
+  auto* view_cmd = app.add_subcommand(
+      "view", "Real-time window (needs a display); `chainbreak view SCENE --help` for options");
+  view_cmd->prefix_command();
+  view_cmd->set_help_flag();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -163,6 +170,11 @@ int main(int argc, char** argv) {
       return cb::render_command(render);
     }
     if (figures_cmd->parsed()) return cb::figures_command(figures);
+
+    if (view_cmd->parsed()) {
+      view.args = view_cmd->remaining();
+      return cb::view_command(view);
+    }
     sweep.overrides = overrides;
     return cb::sweep_command(sweep);
   } catch (const cb::SceneError& e) {

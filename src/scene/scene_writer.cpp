@@ -1,0 +1,121 @@
+#include "scene/scene_writer.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+#include "scene/scene_reader.h"
+
+namespace cb {
+
+namespace {
+
+using scene_detail::format_exact;
+
+// A TOML basic string: quotes, backslashes and control characters escaped.
+std::string quoted(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(c));
+      out += buf;
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
+// A float key: TOML reads "30" as an integer, which the reader accepts for numbers too, but
+// a ".0" keeps the file's intent readable.
+std::string number(double v) {
+  std::string text = format_exact(v);
+  if (text.find_first_of(".eEn") == std::string::npos) text += ".0";
+  return text;
+}
+
+std::string numbers(const std::vector<double>& values) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < values.size(); ++i) out += (i ? ", " : "") + number(values[i]);
+  return out + "]";
+}
+
+void write_drive(std::ostringstream& out, const SceneDesc& scene) {
+  const DriveDesc& d = scene.drive;
+  out << "\n[drive]\ntype = " << quoted(drive_type_name(d.type)) << "\n";
+  out << "t0 = " << number(d.t0) << "\n";
+  switch (d.type) {
+    case DriveType::Step:
+      out << "amplitude = " << number(d.amplitude) << "\n";
+      break;
+    case DriveType::Ramp:
+      out << "beta = " << number(d.beta) << "\n";
+      break;
+    case DriveType::Sine:
+      out << "amplitude = " << number(d.amplitude) << "\nperiod = " << number(d.period) << "\n";
+      break;
+    case DriveType::Impulses:
+      out << "times = " << numbers(d.times) << "\n";
+      if (!d.strengths.empty()) out << "strengths = " << numbers(d.strengths) << "\n";
+      break;
+    case DriveType::Table: {
+      namespace fs = std::filesystem;
+      fs::path file(d.table_file);
+      if (file.is_relative()) file = fs::absolute(fs::path(scene.path).parent_path() / file);
+      out << "file = " << quoted(file.lexically_normal().string()) << "\n";
+      break;
+    }
+    case DriveType::Expr:
+      out << "expr = " << quoted(d.expr) << "\n";
+      break;
+  }
+}
+
+}  // namespace
+
+std::string write_scene(const SceneDesc& scene) {
+  std::ostringstream out;
+  out << "# Written by chainbreak (scene writer): dimensionless numbers, tau and f.\n";
+  out << "title = " << quoted(scene.title) << "\n";
+
+  const ChainParams& c = scene.chain;
+  out << "\n[chain]\nbeads = " << c.beads << "\ngamma = " << number(c.gamma) << "\n";
+  if (c.breakable()) out << "threshold = " << number(c.threshold) << "\n";
+  out << "break_on = " << quoted(c.break_on == BreakMode::Abs ? "abs" : "stretch") << "\n";
+  out << "pull_string = " << (c.pull_string ? "true" : "false") << "\n";
+
+  write_drive(out, scene);
+
+  const IntegratorDesc& i = scene.integrator;
+  out << "\n[integrator]\ndt = " << number(i.dt) << "\nt_end = " << number(i.t_end) << "\n";
+  if (i.after_break) out << "after_break = " << number(*i.after_break) << "\n";
+
+  if (scene.units) {
+    const Units& u = *scene.units;
+    out << "\n[units]\nmass = " << number(u.mass) << "\nstiffness = " << number(u.stiffness)
+        << "\nlength = " << number(u.length) << "\n";
+    // Friction is written only when set: with it the reader checks chain.gamma against it.
+    if (u.friction > 0) out << "friction = " << number(u.friction) << "\n";
+    out << "input = \"dimensionless\"\n";
+  }
+
+  const RenderDesc& r = scene.render;
+  out << "\n[render]\nwidth = " << r.width << "\nheight = " << r.height
+      << "\nfps = " << number(r.fps) << "\nspeed = " << number(r.speed)
+      << "\nview = " << quoted(r.view) << "\n";
+  auto flag = [&](const char* key, bool value) {
+    out << key << " = " << (value ? "true" : "false") << "\n";
+  };
+  flag("overlay", r.overlay);
+  flag("overlay_hud", r.overlay_hud);
+  flag("overlay_plots", r.overlay_plots);
+  flag("overlay_spacetime", r.overlay_spacetime);
+  flag("overlay_modes", r.overlay_modes);
+  return out.str();
+}
+
+}  // namespace cb

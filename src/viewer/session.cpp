@@ -1,0 +1,64 @@
+#include "viewer/session.h"
+
+#include "snapshot/snapshot.h"
+
+namespace cb {
+
+Session::Session(SceneDesc scene, RenderOptions options)
+    : scene_(std::move(scene)), options_(std::move(options)) {
+  restart();
+}
+
+Session::~Session() = default;
+
+void Session::restart() {
+  // The plan's frame grid follows the speed asked for now: a recording then plays at it.
+  options_.speed = scene_.render.speed;
+  // Everything that can throw (a bad setting, a drive that does not compile, a pre-pass that
+  // blows up) happens before anything is replaced: a failed restart leaves the run as it was.
+  RenderPlan plan = plan_render(scene_, options_);
+  measure_plan(scene_, plan);
+  auto sim = std::make_unique<Integrator>(scene_.chain, make_forcing(scene_.drive),
+                                          IntegratorOptions{plan.dt, 1});
+  plan_ = std::move(plan);
+  sim_ = std::move(sim);
+  history_.reset();
+  if (plan_.overlay_layout.enabled)
+    history_ = std::make_unique<OverlayHistory>(scene_.chain, scene_.drive, plan_.overlay_setup);
+  phi_history_.reset(scene_.chain.beads, plan_.tau_per_frame);
+  frame_ = 0;
+  error_.clear();
+  record();
+}
+
+void Session::set_view(const std::string& view) {
+  options_.frame.view = view;
+  plan_.frame.view = view;
+  // As measure_plan lays it out, without the pre-pass: the run's extent has not changed.
+  plan_.style = snapshot_style(scene_, plan_.frame, plan_.extent);
+  if (plan_.overlay_layout.enabled) plan_.style.chain_height = plan_.overlay_layout.chain_height;
+}
+
+void Session::advance(std::int64_t count) {
+  for (std::int64_t i = 0; i < count && !at_end() && error_.empty(); ++i) {
+    if (!sim_->advance_to((frame_ + 1) * plan_.substeps)) {
+      error_ = sim_->error();
+      return;
+    }
+    ++frame_;
+    record();
+  }
+}
+
+void Session::record() {
+  if (history_) history_->record(frame_, sim_->state(), sim_->force_now());
+  phi_history_.record(frame_, sim_->state());
+}
+
+RenderSnapshot Session::snapshot() const {
+  RenderSnapshot snap = build_snapshot(sim_->state(), scene_.chain, sim_->force_now(), plan_.style);
+  if (history_) snap.overlay = history_->share();
+  return snap;
+}
+
+}  // namespace cb

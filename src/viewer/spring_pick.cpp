@@ -1,0 +1,38 @@
+#include "viewer/spring_pick.h"
+
+#include <algorithm>
+
+namespace cb {
+
+namespace {
+
+// x of bead j (0: the wall) in the panel, as build_snapshot places it (snapshot.h).
+float bead_x(const SnapshotLayout& layout, const PanelLayout& panel, const ChainState& state,
+             int j) {
+  const double psi = j > 0 && panel.view == View::Longitudinal ? state.psi[j - 1] : 0.0;
+  return layout.x_wall + static_cast<float>((j + psi) * panel.spacing);
+}
+
+}  // namespace
+
+int spring_at(const SnapshotLayout& layout, const ChainState& state, float x, float y) {
+  const int beads = static_cast<int>(state.psi.size());
+  for (int p = 0; p < layout.panel_count; ++p) {
+    const PanelLayout& panel = layout.panels[p];
+    if (y < panel.top || y > panel.bottom) continue;
+    for (int j = 1; j <= beads; ++j) {
+      const SpringSpan span = spring_span(layout, state, p, j);
+      if (x >= span.x0 && x <= span.x1) return j;
+    }
+  }
+  return 0;
+}
+
+SpringSpan spring_span(const SnapshotLayout& layout, const ChainState& state, int panel,
+                       int spring) {
+  const PanelLayout& p = layout.panels[panel];
+  const float a = bead_x(layout, p, state, spring - 1), b = bead_x(layout, p, state, spring);
+  return {std::min(a, b), std::max(a, b), p.top, p.bottom};
+}
+
+}  // namespace cb

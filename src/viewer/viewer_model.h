@@ -1,0 +1,37 @@
+// What the viewer's controls show and change (ViewerModel), and the one-shot requests a
+// frame collects from the controls, the keyboard and the script (ViewerRequests). Plain data:
+// the loop (viewer.cpp) acts on the requests once per displayed frame.
+#pragma once
+
+#include <string>
+
+namespace cb {
+
+struct ViewerModel {
+  bool playing = false;
+  double speed = 10.0;  // tau per second of wall time (script mode: per 1/fps of a frame)
+  bool show_help = false;
+  bool show_controls = true;  // Tab hides them: the chain alone, as on the video
+  int hovered_spring = 0;     // under the mouse (0: none)
+  int pinned_spring = 0;      // clicked, or `select` in a script; the plot shows it before hover
+  bool recording = false;
+  // Reported by the loop, shown by the controls.
+  bool script = false;          // driven by --script: fixed tau per frame
+  bool behind = false;          // the machine cannot keep up with `speed`
+  double achieved_ratio = 1.0;  // achieved / requested speed
+  double display_fps = 0.0;
+  std::string status;  // the last thing written, or the last error
+};
+
+struct ViewerRequests {
+  int step = 0;                 // grid frames to advance while paused
+  bool restart = false;         // from tau = 0 with the current settings
+  bool apply_settings = false;  // the draft scene replaces the session's (then restart)
+  bool view_changed = false;    // the draft's view: new layout, same run
+  bool speed_changed = false;   // re-base the pacer
+  bool snapshot = false, save = false, record = false, quit = false;  // record: start or stop
+  std::string snapshot_path, save_path, record_path;                  // empty: a name in --out-dir
+  std::string screenshot_path;  // script only: the whole window
+};
+
+}  // namespace cb

@@ -1,0 +1,41 @@
+// The viewer's outputs: "Snapshot" (the frame as a PNG), "Record" (the session as a video
+// through cb::VideoEncoder) and "Save scene" (the settings as a scene file, scene_writer.h).
+// All are the frame the renderer drew, without the viewer's controls on top.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "output/image.h"
+#include "scene/scene.h"
+
+namespace cb {
+
+class VideoEncoder;
+
+class ViewerOutputs {
+ public:
+  // Default names go into `out_dir` and start with `scene_name`.
+  ViewerOutputs(std::string out_dir, std::string scene_name);
+  ~ViewerOutputs();
+
+  // Each returns what to show in the status line ("wrote renders/x.png"); errors a user can
+  // cause (an unwritable folder) are caught and returned as the status, not thrown.
+  std::string snapshot(const Image& frame, double tau, const std::string& path);
+  std::string save(const SceneDesc& scene, const std::string& path);
+  // Starts a video of frames of this size at `fps` frames per second.
+  std::string start_recording(int width, int height, int fps, const std::string& path);
+  std::string stop_recording();
+  bool recording() const { return video_ != nullptr; }
+  void push(Image frame);  // while recording: one displayed frame
+
+ private:
+  std::string default_path(const std::string& suffix) const;
+
+  std::string out_dir_, scene_name_;
+  std::unique_ptr<VideoEncoder> video_;
+  std::string video_path_;
+  long long video_frames_ = 0;
+};
+
+}  // namespace cb

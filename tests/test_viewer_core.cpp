@@ -1,0 +1,175 @@
+// The viewer's parts that need no window (src/viewer): the pacer (physics decoupled from the
+// display, and saying when it cannot keep up), the script parser, the phi history, picking a
+// spring under the mouse. Times are made up, so these run anywhere.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "drive/drive.h"
+#include "physics/integrator.h"
+#include "scene/scene.h"
+#include "snapshot/snapshot.h"
+#include "viewer/frame_placement.h"
+#include "viewer/pacer.h"
+#include "viewer/phi_history.h"
+#include "viewer/script.h"
+#include "viewer/session.h"
+#include "viewer/spring_pick.h"
+
+TEST_CASE("the pacer advances grid frames with wall time at the chosen speed", "[viewer]") {
+  cb::Pacer pacer;
+  // 10 tau per second on a grid of 0.2 tau: 50 frames per second.
+  pacer.reset(100.0, 7, 10.0, 0.2);
+  CHECK(pacer.due(100.0) == 7);
+  CHECK(pacer.due(100.5) == 7 + 25);
+  CHECK(pacer.due(101.0) == 7 + 50);
+  // Keeping up: the frame due is reached each displayed frame.
+  for (int k = 1; k <= 60; ++k) pacer.reached(100.0 + k / 60.0, pacer.due(100.0 + k / 60.0), false);
+  CHECK_FALSE(pacer.behind());
+  CHECK(pacer.achieved_ratio() > 0.95);
+}
+
+TEST_CASE("the pacer reports a machine that cannot keep up, and drops the backlog", "[viewer]") {
+  cb::Pacer pacer;
+  pacer.reset(0.0, 0, 10.0, 0.2);  // 50 frames due per second
+  // A displayed frame every 0.05 s, each spending its physics budget on 1 grid frame where
+  // 2.5 are due.
+  std::int64_t frame = 0;
+  for (int k = 1; k <= 60; ++k) {
+    const double now = k * 0.05;
+    REQUIRE(pacer.due(now) > frame + 1);
+    pacer.reached(now, ++frame, true);
+  }
+  CHECK(pacer.behind());
+  // 1 of the 2 whole frames due after each re-base (floor(2.5)): 50 %, and the average's
+  // memory of the start (0.5 * 0.95^60 = 0.023) within the margin.
+  CHECK(pacer.achieved_ratio() == Approx(0.5).margin(0.05));
+  // The backlog was dropped: what is due now is close to where the run is, not 100 frames on.
+  CHECK(pacer.due(3.0) - frame <= 1);
+}
+
+TEST_CASE("scripts parse into timed actions, and mistakes name the line", "[viewer]") {
+  const auto actions = cb::parse_script(
+      "# a comment\n0 play\n\n10 set speed 20  # faster\n10 snapshot out.png\n12 step 3\n"
+      "12 record stop\n20 quit\n",
+      "s.txt");
+  REQUIRE(actions.size() == 6);
+  CHECK(actions[0].action == "play");
+  CHECK(actions[1].key == "speed");
+  CHECK(actions[1].argument == "20");
+  CHECK(actions[2].argument == "out.png");
+  CHECK(actions[3].argument == "3");
+  CHECK(actions[5].frame == 20);
+
+  cb::ScriptPlayer player(actions);
+  CHECK(player.take(5).size() == 1);
+  CHECK(player.take(10).size() == 2);
+  CHECK(player.take(20).size() == 3);
+  CHECK(player.finished());
+
+  auto error = [](const std::string& text) {
+    try {
+      cb::parse_script(text, "s.txt");
+    } catch (const cb::SceneError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  CHECK_THAT(error("0 play\n3 jump\n"), Catch::Contains("s.txt:2: unknown action 'jump'"));
+  CHECK_THAT(error("5 play\n3 pause\n"), Catch::Contains("s.txt:2:"));
+  CHECK_THAT(error("0 set colour 3\n"), Catch::Contains("unknown setting 'colour'"));
+  CHECK_THAT(error("play\n"), Catch::Contains("not a frame number"));
+  CHECK_THAT(error("0 snapshot\n"), Catch::Contains("needs an argument"));
+}
+
+TEST_CASE("the phi history keeps every spring and halves itself when full", "[viewer]") {
+  cb::ChainState state;
+  state.psi = {0.5, 1.5, 2.0};
+  cb::PhiHistory history;
+  history.reset(3, 0.25);
+  for (int frame = 0; frame < 4; ++frame) history.record(frame, state);
+  REQUIRE(history.rows() == 4);
+  CHECK(history.phi(1, 0) == 0.5f);  // psi_1 - 0
+  CHECK(history.phi(2, 3) == 1.0f);  // psi_2 - psi_1
+  CHECK(history.tau(3) == 0.75);
+  state.broken = {3};
+  history.record(4, state);
+  CHECK(std::isnan(history.phi(3, 4)));
+
+  // kMaxValues / N rows fit; one more halves the table and doubles the stride.
+  const int springs = 1024;
+  cb::ChainState big;
+  big.psi.assign(springs, 0.0);
+  cb::PhiHistory full;
+  full.reset(springs, 1.0);
+  const auto capacity = static_cast<std::int64_t>(cb::PhiHistory::kMaxValues / springs);
+  for (std::int64_t frame = 0; frame <= capacity; ++frame) full.record(frame, big);
+  CHECK(full.stride() == 2);
+  CHECK(full.rows() == static_cast<std::size_t>(capacity / 2 + 1));
+  CHECK(full.tau(1) == 2.0);
+}
+
+TEST_CASE("the spring under a point is the one between its two beads", "[viewer]") {
+  cb::ChainParams params;
+  params.beads = 10;
+  cb::ChainState state;
+  state.psi.assign(10, 0.0);
+  cb::SnapshotStyle style;
+  style.width = 1000;
+  style.height = 500;
+  const cb::SnapshotLayout layout = cb::snapshot_layout(style, params);
+  const cb::PanelLayout& panel = layout.panels[0];
+  const float y = panel.centre_y;
+  // Halfway between bead 2 and bead 3 at rest: spring 3.
+  const float x = layout.x_wall + 2.5f * panel.spacing;
+  CHECK(cb::spring_at(layout, state, x, y) == 3);
+  CHECK(cb::spring_at(layout, state, layout.x_wall + 0.5f * panel.spacing, y) == 1);
+  CHECK(cb::spring_at(layout, state, x, panel.bottom + 5) == 0);   // below the chain's panel
+  CHECK(cb::spring_at(layout, state, layout.x_wall - 5, y) == 0);  // behind the wall
+}
+
+TEST_CASE("the session steps on render's frame grid, restarts and changes the view", "[viewer]") {
+  // 12 tau/s at 60 fps: 0.2 tau a frame, 20 steps of the scene's dt = 0.01, as `render` plans.
+  cb::RenderOptions options;
+  options.no_overlay = true;
+  const cb::SceneDesc scene =
+      cb::load_scene(std::string(CHAINBREAK_SCENES) + "/anomalous_breaking.toml",
+                     {{"render.speed", "12"}, {"integrator.t_end", "20"}});
+  cb::Session session(scene, options);
+  CHECK(session.plan().substeps == 20);
+  CHECK(session.plan().frames == 101);
+  session.advance(100);
+  CHECK(session.frame() == 100);
+  CHECK(session.at_end());
+  session.advance(5);  // the run ends at t_end: nothing more
+  CHECK(session.frame() == 100);
+
+  // The same state as the integrator stepped 2000 times on its own (bit for bit).
+  cb::Integrator reference(scene.chain, cb::make_forcing(scene.drive), {0.01, 1});
+  REQUIRE(reference.advance_to(2000));
+  CHECK(session.state().psi == reference.state().psi);
+  CHECK(session.phi_history().rows() == 101);
+
+  session.set_view("both");
+  CHECK(session.snapshot().layout.panel_count == 2);
+  session.restart();
+  CHECK(session.frame() == 0);
+  CHECK(session.state().psi == std::vector<double>(30, 0.0));
+}
+
+TEST_CASE("the frame sits in the window as large as fits, centred, and maps both ways",
+          "[viewer]") {
+  const cb::FramePlacement same = cb::place_frame(1920, 1080, 1920, 1080);
+  CHECK(same.fills_window());
+  CHECK(same.one_to_one());
+  // A 16:9 frame in a 4:3 window: full width, bars above and below.
+  const cb::FramePlacement p = cb::place_frame(1920, 1080, 1024, 768);
+  CHECK(p.width == 1024);
+  CHECK(p.height == 576);
+  CHECK(p.x == 0);
+  CHECK(p.y == 96);
+  CHECK(p.gl_bottom() == 96);
+  CHECK_FALSE(p.fills_window());
+  CHECK(p.frame_x(512.0f) == Approx(960.0f));
+  CHECK(p.frame_y(96.0f) == Approx(0.0f));
+  CHECK(p.window_y(p.frame_y(400.0f)) == Approx(400.0f));
+}
