@@ -105,6 +105,43 @@ Fidelity compare_flat(const Image& input, const Image& decoded) {
   return f;
 }
 
+// Where a decoded picture shows make_frame's orange rectangle: the first column along row
+// h / 2 (inside the rectangle for every k), then the first row along the column 30 px right
+// of that, whose red channel is past half-way from the background (40) to the orange (230).
+// Nothing else left of or above the rectangle on those lines is that red.
+struct Edges {
+  int left = -1, top = -1;
+};
+Edges orange_edges(const Image& im, int h) {
+  Edges e;
+  for (int x = 0; x < im.width && e.left < 0; ++x)
+    if (im.pixel(x, h / 2)[0] > 135) e.left = x;
+  if (e.left < 0 || e.left + 30 >= im.width) return e;
+  for (int y = 0; y < im.height && e.top < 0; ++y)
+    if (im.pixel(e.left + 30, y)[0] > 135) e.top = y;
+  return e;
+}
+
+// Frames decoded from several places in the clip, each against its own input: the rectangle
+// where make_frame draws it in that frame (left edge 10 + 5k, top edge h / 2 - 20 + k % 5)
+// within `edge` px (measured: exactly there for H.264, VP9 and GIF), and the flat colours
+// within 1 level on average (measured <= 0.14 for H.264, 0.25 for VP9, 0 for GIF). Frames are
+// 5 px apart: a frame 3 off (decoding 18 for 15) puts the edges 15 px away and the mean
+// error at 2.5 .. 2.7, which the tests' single-frame bounds (3 and 4) let pass.
+void check_frames(const std::string& path, int w, int h, int edge) {
+  for (int k : {0, 1, 7, 15, 18, 29}) {
+    const Decoded d = decode(path, k);
+    INFO("frame " << k);
+    REQUIRE(d.picture.width >= w);
+    REQUIRE(d.picture.height >= h);
+    const Edges e = orange_edges(d.picture, h);
+    CHECK(std::abs(e.left - (10 + 5 * k)) <= edge);
+    CHECK(std::abs(e.top - (h / 2 - 20 + k % 5)) <= edge);
+    const Fidelity f = compare_flat(make_frame(w, h, k), d.picture);
+    for (double m : f.mean) CHECK(m < 1.0);
+  }
+}
+
 }  // namespace
 
 TEST_CASE("MP4: H.264 yuv420p, exact timing, moov first, reproducible, faithful", "[video]") {
@@ -143,6 +180,7 @@ TEST_CASE("MP4: H.264 yuv420p, exact timing, moov first, reproducible, faithful"
   const Fidelity f = compare_flat(make_frame(320, 240, 15), d.picture);
   for (double m : f.mean) CHECK(m < 3.0);
   CHECK(f.max < 40);
+  check_frames(a, 320, 240, 1);
 }
 
 TEST_CASE("MP4: odd sizes are padded by one pixel with the edge colour", "[video]") {
@@ -167,6 +205,7 @@ TEST_CASE("MP4: odd sizes are padded by one pixel with the edge colour", "[video
   for (int x = 20; x < 200; x += 10)
     for (int c = 0; c < 3; ++c)
       CHECK(std::abs(d.picture.pixel(x, 241)[c] - input.pixel(x, 240)[c]) < 8);
+  check_frames(path, 321, 241, 1);
 }
 
 TEST_CASE("WebM: VP9 keeps odd sizes and every frame", "[video]") {
@@ -187,6 +226,7 @@ TEST_CASE("WebM: VP9 keeps odd sizes and every frame", "[video]") {
   // VP9 at crf 32 and real-time speed: looser than H.264 at crf 18 (measured mean <= 0.2).
   const Fidelity f = compare_flat(make_frame(321, 241, 15), d.picture);
   for (double m : f.mean) CHECK(m < 4.0);
+  check_frames(path, 321, 241, 1);
 }
 
 TEST_CASE("GIF: every frame, the size, close colours, loops forever", "[video]") {
@@ -209,6 +249,7 @@ TEST_CASE("GIF: every frame, the size, close colours, loops forever", "[video]")
   CHECK(f.max <= 1);
   const std::string bytes = read_bytes(path);
   CHECK(bytes.find("NETSCAPE2.0") != std::string::npos);  // the looping extension
+  check_frames(path, 320, 240, 0);
 }
 
 TEST_CASE("GIF: colours that appear later get a new palette", "[video]") {
