@@ -37,8 +37,6 @@ using namespace cb::overlay_test;
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
 // What `render` does on its producer thread: step to frame k (k * substeps steps of dt) and
 // record it. Returns the history after `frames` frames.
 std::unique_ptr<cb::OverlayHistory> record_run(const cb::ChainParams& params,
