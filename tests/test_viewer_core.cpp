@@ -11,6 +11,7 @@
 #include "viewer/frame_placement.h"
 #include "viewer/pacer.h"
 #include "viewer/phi_history.h"
+#include "viewer/record_clock.h"
 #include "viewer/script.h"
 #include "viewer/session.h"
 #include "viewer/spring_pick.h"
@@ -172,4 +173,24 @@ TEST_CASE("the frame sits in the window as large as fits, centred, and maps both
   CHECK(p.frame_x(512.0f) == Approx(960.0f));
   CHECK(p.frame_y(96.0f) == Approx(0.0f));
   CHECK(p.window_y(p.frame_y(400.0f)) == Approx(400.0f));
+}
+
+TEST_CASE("a real-time recording writes video frames by wall time, not one per display",
+          "[viewer]") {
+  cb::RecordClock clock(10, 100.0);     // 10 frames/s, started at wall time 100 s
+  CHECK(clock.frames_at(100.0) == 1);   // video frame 0
+  CHECK(clock.frames_at(100.05) == 0);  // the window ran ahead: frame 1 is not due yet
+  CHECK(clock.frames_at(100.35) == 3);  // fell behind: frames 1, 2, 3 repeat this picture
+  CHECK(clock.frames_at(100.36) == 0);
+  CHECK(clock.written() == 4);
+  // Over a steady 25 displayed frames a second for 2 s, a 10 fps video gets 2 s of frames.
+  cb::RecordClock steady(10, 0.0);
+  int total = 0;
+  for (int k = 0; k < 50; ++k) total += steady.frames_at(k / 25.0);
+  CHECK(total == 20);  // frames 0..19 (the one at 1.96 s is frame 19)
+  // A 5 s stall is capped at one second of repeated picture, then time moves on.
+  cb::RecordClock stalled(10, 0.0);
+  CHECK(stalled.frames_at(0.0) == 1);
+  CHECK(stalled.frames_at(5.0) == 10);
+  CHECK(stalled.frames_at(5.15) == 1);
 }

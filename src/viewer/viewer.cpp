@@ -181,13 +181,13 @@ struct Viewer {
     if (r.snapshot) model.status = outputs.snapshot(image, session.tau(), r.snapshot_path);
     if (r.record) {
       const int fps = static_cast<int>(std::lround(session.plan().frame.fps));
-      model.status = outputs.recording()
-                         ? outputs.stop_recording()
-                         : outputs.start_recording(image.width, image.height, fps, r.record_path);
+      model.status = outputs.recording() ? outputs.stop_recording()
+                                         : outputs.start_recording(image.width, image.height, fps,
+                                                                   r.record_path, !fixed_step);
     }
     if (outputs.recording()) {
       try {
-        outputs.push(std::move(image));
+        outputs.push(std::move(image), Window::now());
       } catch (const OutputError& e) {
         model.status = std::string("record failed: ") + e.what();
         outputs.stop_recording();

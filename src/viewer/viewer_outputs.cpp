@@ -51,20 +51,23 @@ std::string ViewerOutputs::save(const SceneDesc& scene, const std::string& path)
   return "wrote " + target;
 }
 
-std::string ViewerOutputs::start_recording(int width, int height, int fps,
-                                           const std::string& path) {
+std::string ViewerOutputs::start_recording(int width, int height, int fps, const std::string& path,
+                                           bool real_time) {
   if (video_) return "already recording " + video_path_;
   video_path_ = path.empty() ? default_path("_view.mp4") : path;
   VideoSettings settings;
   settings.width = width;
   settings.height = height;
   settings.fps = fps;
+  video_fps_ = fps;
   try {
     video_ = std::make_unique<VideoEncoder>(video_path_, settings);
   } catch (const std::exception& e) {
     return std::string("record failed: ") + e.what();
   }
   video_frames_ = 0;
+  clock_.reset();
+  real_time_ = real_time;
   return "recording " + video_path_ + " (M or Record stops)";
 }
 
@@ -83,10 +86,17 @@ std::string ViewerOutputs::stop_recording() {
   return status;
 }
 
-void ViewerOutputs::push(Image frame) {
+void ViewerOutputs::push(Image frame, double now) {
   if (!video_) return;
-  video_->push(std::move(frame));
-  ++video_frames_;
+  int copies = 1;
+  if (real_time_) {
+    if (!clock_) clock_.emplace(video_fps_, now);
+    copies = clock_->frames_at(now);
+  }
+  for (int k = 0; k < copies; ++k) {
+    video_->push(k + 1 < copies ? frame : std::move(frame));
+    ++video_frames_;
+  }
 }
 
 }  // namespace cb

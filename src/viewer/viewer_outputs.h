@@ -4,10 +4,12 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "output/image.h"
 #include "scene/scene.h"
+#include "viewer/record_clock.h"
 
 namespace cb {
 
@@ -23,11 +25,16 @@ class ViewerOutputs {
   // cause (an unwritable folder) are caught and returned as the status, not thrown.
   std::string snapshot(const Image& frame, double tau, const std::string& path);
   std::string save(const SceneDesc& scene, const std::string& path);
-  // Starts a video of frames of this size at `fps` frames per second.
-  std::string start_recording(int width, int height, int fps, const std::string& path);
+  // Starts a video of frames of this size at `fps` frames per second. `real_time`: frames
+  // are written by wall time (record_clock.h), so the video plays at the speed the session
+  // was shown; otherwise (script mode) one video frame per displayed frame.
+  std::string start_recording(int width, int height, int fps, const std::string& path,
+                              bool real_time);
   std::string stop_recording();
   bool recording() const { return video_ != nullptr; }
-  void push(Image frame);  // while recording: one displayed frame
+  // While recording: the frame displayed at wall time `now` (s), written as often as the
+  // video's rate asks (none, once, or repeated; once each when not in real time).
+  void push(Image frame, double now);
 
  private:
   std::string default_path(const std::string& suffix) const;
@@ -36,6 +43,9 @@ class ViewerOutputs {
   std::unique_ptr<VideoEncoder> video_;
   std::string video_path_;
   long long video_frames_ = 0;
+  std::optional<RecordClock> clock_;  // real-time recordings: started by the first frame
+  bool real_time_ = false;
+  int video_fps_ = 30;
 };
 
 }  // namespace cb
