@@ -18,6 +18,7 @@
 #include <memory>
 #include <vector>
 
+#include "bench_support.h"
 #include "gl/gl_context.h"
 #include "output/image.h"
 #include "overlay/overlay.h"
@@ -25,6 +26,8 @@
 #include "render/renderer.h"
 
 namespace {
+
+using cb::bench::median;
 
 constexpr int kW = 1920, kH = 1080;
 constexpr int kCycle = 50;  // frames drawn in turn
@@ -75,13 +78,6 @@ BENCHMARK(BM_Frame)
     ->MinTime(2.0)
     ->Repetitions(5);
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 // Wall-time medians come from Google Benchmark's own aggregates; this adds the CPU view.
 class Summary : public benchmark::ConsoleReporter {
  public:
@@ -108,12 +104,7 @@ class Summary : public benchmark::ConsoleReporter {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<char*> args(argv, argv + argc);
-  char interleave[] = "--benchmark_enable_random_interleaving=true";
-  args.insert(args.begin() + 1, interleave);
-  int count = static_cast<int>(args.size());
-  benchmark::Initialize(&count, args.data());
-  if (benchmark::ReportUnrecognizedArguments(count, args.data())) return 1;
+  if (!cb::bench::initialize(argc, argv)) return 1;
   const cb::overlay_test::Video video(kW, kH);
   g_frames = video.frames(340, &g_record_ms);  // to tau 169.5, past the first break
   Summary summary;

@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_support.h"
 #include "gl/gl_context.h"
 #include "gl/gl_loader.h"
 #include "output/image.h"
@@ -409,16 +410,8 @@ void register_all() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // Repetitions in random order across benchmarks, so a drift of the machine's speed
-  // (PLATFORM-NOTES.md) spreads over all of them instead of biasing the ratios. A flag given
-  // on the command line comes later and wins.
-  std::vector<char*> args(argv, argv + argc);
-  char interleave[] = "--benchmark_enable_random_interleaving=true";
-  args.insert(args.begin() + 1, interleave);
-  int count = static_cast<int>(args.size());
   register_all();
-  benchmark::Initialize(&count, args.data());
-  if (benchmark::ReportUnrecognizedArguments(count, args.data())) return 1;
+  if (!cb::bench::initialize(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

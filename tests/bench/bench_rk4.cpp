@@ -28,6 +28,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "bench_support.h"
 #include "drive/drive.h"
 #include "physics/integrator.h"
 
@@ -297,12 +298,7 @@ int main(int argc, char** argv) {
   // Repetitions run in random order across benchmarks, so a drift of the machine's speed
   // during the run (PLATFORM-NOTES.md) spreads over all of them instead of biasing the
   // ratios. A flag given on the command line comes later and wins.
-  std::vector<char*> args(argv, argv + argc);
-  char interleave[] = "--benchmark_enable_random_interleaving=true";
-  args.insert(args.begin() + 1, interleave);
-  int count = static_cast<int>(args.size());
-  benchmark::Initialize(&count, args.data());
-  if (benchmark::ReportUnrecognizedArguments(count, args.data())) return 1;
+  if (!cb::bench::initialize(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

@@ -47,11 +47,14 @@ extern "C" {
 #include <string>
 #include <vector>
 
+#include "bench_support.h"
 #include "output/image.h"
 #include "output/png_writer.h"
 #include "output/yuv420.h"
 
 namespace {
+
+using cb::bench::median;
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
@@ -440,13 +443,6 @@ BENCHMARK(BM_Video)->DenseRange(0, 2)->Apply(common);
 BENCHMARK(BM_EncodeReady)->DenseRange(0, 2)->Apply(common);
 BENCHMARK(BM_OverlayShare)->Apply(common);
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 void print_summary() {
   auto m = [](const std::string& name) { return median(g_values[name]); };
   std::printf(
@@ -481,14 +477,7 @@ void print_summary() {
 
 int main(int argc, char** argv) {
   av_log_set_level(AV_LOG_ERROR);  // x264's banner and statistics are noise here
-  // Repetitions in random order, so a drift of the machine's speed (PLATFORM-NOTES.md)
-  // spreads over every benchmark instead of biasing a ratio. A flag given later wins.
-  std::vector<char*> args(argv, argv + argc);
-  char interleave[] = "--benchmark_enable_random_interleaving=true";
-  args.insert(args.begin() + 1, interleave);
-  int count = static_cast<int>(args.size());
-  benchmark::Initialize(&count, args.data());
-  if (benchmark::ReportUnrecognizedArguments(count, args.data())) return 1;
+  if (!cb::bench::initialize(argc, argv)) return 1;
   make_clip();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
