@@ -337,3 +337,21 @@ TEST_CASE("override mistakes are reported as --set KEY=VALUE", "[scene]") {
 }
 
 // ---- Shipped scenes ------------------------------------------------------------------------
+
+TEST_CASE("an inline table (drive.points) is checked like a table file", "[scene]") {
+  const std::string table = with("type = \"ramp\"\nbeta = 0.02\n", "type = \"table\"\n");
+  CHECK(parse_scene(
+            with("type = \"table\"\n", "type = \"table\"\npoints = [0.0, 0.0, 5.0, 1.0]\n", table),
+            "t.toml")
+            .drive.table.size() == 2);
+  CHECK_THAT(
+      error_of(with("type = \"table\"\n", "type = \"table\"\npoints = [0.0, 0.0, 5.0]\n", table)),
+      Contains("tau, f pairs") && Contains("points = [0.0, 0.0, 50.0, 1.0]"));
+  CHECK_THAT(error_of(with("type = \"table\"\n",
+                           "type = \"table\"\npoints = [0.0, 0.0, 5.0, 1.0, 5.0, 2.0]\n", table)),
+             Contains("tau must increase") && Contains("pair 3"));
+  CHECK_THAT(
+      error_of(with("type = \"table\"\n",
+                    "type = \"table\"\nfile = \"f.csv\"\npoints = [0.0, 0.0, 5.0, 1.0]\n", table)),
+      Contains("not both"));
+}

@@ -21,8 +21,10 @@
 //   times = [0.0, 30.0]   # impulses (required, non-empty, each >= 0): kick times after t0
 //   strengths = [1, 1]    # impulses (optional, one per time): f = sum s_k delta(tau - t0 - t_k);
 //                         # default 1 each
-//   file = "data/x.csv"   # table (required): CSV of "tau,f" rows, path relative to the
-//                         # scene file's folder, loaded by load_drive_table; linear in between
+//   file = "data/x.csv"   # table (this or points): CSV of "tau,f" rows, path relative to
+//                         # the scene file's folder, loaded by load_drive_table; linear in
+//                         # between
+//   points = [0, 0, 5, 1] # table (this or file): tau, f pairs inline (the scene writer's form)
 //   expr = "0.02*t"       # expr (required): muParser expression in t = tau - t0 (pi defined),
 //                         # compiled on load by make_forcing
 //   Keys of other drive types may stay in the file (they are type-checked and ignored), so

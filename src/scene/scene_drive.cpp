@@ -42,18 +42,42 @@ void read_impulses(const SceneReader& r, const Conversion& c, DriveDesc& d) {
       d.strengths.push_back(c.impulse(strengths ? (*strengths)[i] : 1.0));
 }
 
-void read_table(const SceneReader& r, const Conversion& c, const std::string& scene_dir,
-                DriveDesc& d) {
+// The table's rows as the scene gives them, before unit conversion: inline (`points`, tau
+// and f pairs; what the scene writer uses for converted SI tables) or from a CSV file.
+void read_table_rows(const SceneReader& r, const std::string& scene_dir, DriveDesc& d) {
+  const auto points = r.numbers("drive", "points");
+  const auto file = r.string("drive", "file");
+  if (points && file)
+    r.fail("drive", "points", "give the table either as drive.file or as drive.points, not both");
+  if (points) {
+    if (points->size() < 4 || points->size() % 2 != 0)
+      r.fail("drive", "points",
+             "drive.points holds tau, f pairs: an even count of numbers, at least two pairs, "
+             "e.g. points = [0.0, 0.0, 50.0, 1.0]");
+    for (std::size_t i = 0; i < points->size(); i += 2) {
+      if (!d.table.empty() && (*points)[i] <= d.table.back().first)
+        r.fail("drive", "points",
+               "drive.points: tau must increase from pair to pair (pair " +
+                   std::to_string(i / 2 + 1) + " has tau = " + format_exact((*points)[i]) + ")");
+      d.table.emplace_back((*points)[i], (*points)[i + 1]);
+    }
+    return;
+  }
   d.table_file = r.require_string("drive", "file", needs("table", "a CSV file of tau,f rows"));
   // Relative to the scene file, so a scene and its data move together.
-  const std::filesystem::path file =
+  const std::filesystem::path path =
       std::filesystem::path(scene_dir) / std::filesystem::path(d.table_file);
   try {
-    load_drive_table(d, file.string());
+    load_drive_table(d, path.string());
   } catch (const DriveError& e) {
     // The DriveError names the resolved path, the row and what to fix.
     r.fail("drive", "file", "cannot use drive.file = \"" + d.table_file + "\": " + e.what());
   }
+}
+
+void read_table(const SceneReader& r, const Conversion& c, const std::string& scene_dir,
+                DriveDesc& d) {
+  read_table_rows(r, scene_dir, d);
   for (auto& [t, f] : d.table) {
     t = c.time(t);
     f = c.force(f);
@@ -125,6 +149,7 @@ DriveDesc read_drive(const SceneReader& r, const Conversion& c, const std::strin
   r.numbers("drive", "times");
   r.numbers("drive", "strengths");
   r.string("drive", "file");
+  r.numbers("drive", "points");
   r.string("drive", "expr");
   return d;
 }

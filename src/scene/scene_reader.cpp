@@ -34,6 +34,7 @@ constexpr KeySpec kSchema[] = {
     {"drive", "times", Kind::NumberArray, "times = [0.0, 30.0]"},
     {"drive", "strengths", Kind::NumberArray, "strengths = [1.0, 1.0]"},
     {"drive", "file", Kind::String, "file = \"data/smooth_pull.csv\""},
+    {"drive", "points", Kind::NumberArray, "points = [0.0, 0.0, 50.0, 1.0]"},
     {"drive", "expr", Kind::String, "expr = \"0.02*t\""},
     {"drive", "t0", Kind::Number, "t0 = 0.0"},
     {"integrator", "dt", Kind::Number, "dt = 0.01"},

@@ -63,6 +63,15 @@ void write_drive(std::ostringstream& out, const SceneDesc& scene) {
       if (!d.strengths.empty()) out << "strengths = " << numbers(d.strengths) << "\n";
       break;
     case DriveType::Table: {
+      // A table read with SI input holds converted values while its file holds SI ones, and
+      // this file is written in tau and f: so write the converted rows themselves.
+      if (d.table_file.empty() || (scene.units && scene.units->si_input)) {
+        if (!d.table_file.empty()) out << "# converted to tau and f from " << d.table_file << "\n";
+        std::vector<double> points;
+        for (const auto& [t, f] : d.table) points.insert(points.end(), {t, f});
+        out << "points = " << numbers(points) << "\n";
+        break;
+      }
       namespace fs = std::filesystem;
       fs::path file(d.table_file);
       if (file.is_relative()) file = fs::absolute(fs::path(scene.path).parent_path() / file);
@@ -98,8 +107,9 @@ std::string write_scene(const SceneDesc& scene) {
     const Units& u = *scene.units;
     out << "\n[units]\nmass = " << number(u.mass) << "\nstiffness = " << number(u.stiffness)
         << "\nlength = " << number(u.length) << "\n";
-    // Friction is written only when set: with it the reader checks chain.gamma against it.
-    if (u.friction > 0) out << "friction = " << number(u.friction) << "\n";
+    // No friction: chain.gamma says it in this file's units, and the reader derives
+    // friction = 2 m omega0 gamma from it. Writing both would let an edited gamma (the
+    // viewer's slider) disagree with a stale friction, which the reader refuses.
     out << "input = \"dimensionless\"\n";
   }
 
