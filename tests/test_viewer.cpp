@@ -161,3 +161,18 @@ TEST_CASE("record writes the session as an MP4", "[viewer][xvfb]") {
 }
 
 #endif  // CHAINBREAK_VIEWER_EXE
+
+TEST_CASE("a script's failed actions are reported on stderr and end with status 1",
+          "[viewer][xvfb]") {
+  if (skip_without_xvfb()) return;
+  TempDir dir("chainbreak-view");
+  write_file(dir.file("s.txt"), "0 snapshot /nonexistent-dir/x.png\n1 set threshold 0\n2 save " +
+                                    dir.file("ok.toml") + "\n3 quit\n");
+  const auto view =
+      view_under_xvfb(kScene + " " + kSets + " --no-overlay -q l --script " + dir.file("s.txt"));
+  CHECK(view.status == 1);
+  CHECK_THAT(view.err, Catch::Contains("frame 0: snapshot failed") && Catch::Contains("frame 1:") &&
+                           Catch::Contains("threshold") &&
+                           Catch::Contains("2 script action(s) failed"));
+  CHECK(std::filesystem::exists(dir.file("ok.toml")));  // the script carried on
+}

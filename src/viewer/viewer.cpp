@@ -47,6 +47,7 @@ struct Viewer {
   Pacer pacer;
   std::optional<ScriptPlayer> script;
   std::int64_t display_frame = 0;
+  int script_failures = 0;  // script actions that failed (set_status)
   FrameTimes times;
   bool fixed_step = false;  // script or benchmark: a fixed tau per displayed frame
 
@@ -91,12 +92,25 @@ struct Viewer {
       }
       if (apply_draft) model.status.clear();  // an earlier rejected edit is no longer news
     } catch (const std::exception& e) {
-      model.status = e.what();
+      set_status(e.what(), true);
       const std::string view = draft.render.view;  // the view is not part of a restart
       draft = session.scene();
       draft.render.view = view;
     }
     plot.reset();
+  }
+
+  // The panel's status line. In a script a failure also goes to stderr and makes the run end
+  // with status 1: whoever runs a script sees no panel. Outputs report failures as
+  // "... failed: why"; a rejected edit is flagged by the caller.
+  void set_status(std::string text, bool failed = false) {
+    failed = failed || text.find(" failed: ") != std::string::npos;
+    if (failed && script) {
+      std::fprintf(stderr, "chainbreak view: frame %lld: %s\n",
+                   static_cast<long long>(display_frame), text.c_str());
+      ++script_failures;
+    }
+    model.status = std::move(text);
   }
 
   void apply(ViewerRequests& r) {
@@ -115,7 +129,7 @@ struct Viewer {
       SceneDesc saved = session.scene();
       saved.render.speed = model.speed;
       saved.render.view = draft.render.view;
-      model.status = outputs.save(saved, r.save_path);
+      set_status(outputs.save(saved, r.save_path));
     }
     if (r.quit) window.close();
   }
@@ -178,18 +192,18 @@ struct Viewer {
   void write_outputs(const ViewerRequests& r) {
     Image image;
     renderer.read(image);
-    if (r.snapshot) model.status = outputs.snapshot(image, session.tau(), r.snapshot_path);
+    if (r.snapshot) set_status(outputs.snapshot(image, session.tau(), r.snapshot_path));
     if (r.record) {
       const int fps = static_cast<int>(std::lround(session.plan().frame.fps));
-      model.status = outputs.recording() ? outputs.stop_recording()
-                                         : outputs.start_recording(image.width, image.height, fps,
-                                                                   r.record_path, !fixed_step);
+      set_status(outputs.recording() ? outputs.stop_recording()
+                                     : outputs.start_recording(image.width, image.height, fps,
+                                                               r.record_path, !fixed_step));
     }
     if (outputs.recording()) {
       try {
         outputs.push(std::move(image), Window::now());
       } catch (const OutputError& e) {
-        model.status = std::string("record failed: ") + e.what();
+        set_status(std::string("record failed: ") + e.what());
         outputs.stop_recording();
       }
     }
@@ -251,7 +265,7 @@ struct Viewer {
     plot.draw(session, plotted);
     ui.end_frame();
     if (!r.screenshot_path.empty())
-      model.status = outputs.snapshot(window.read_back_buffer(), session.tau(), r.screenshot_path);
+      set_status(outputs.snapshot(window.read_back_buffer(), session.tau(), r.screenshot_path));
     window.swap();
 
     const double end = Window::now();
@@ -294,6 +308,11 @@ int run_viewer(const ViewerOptions& o) {
   if (!viewer.session.error().empty()) {
     std::fprintf(stderr, "chainbreak view: %s\n", viewer.session.error().c_str());
     return unattended ? 1 : 0;
+  }
+  if (viewer.script_failures > 0) {
+    std::fprintf(stderr, "chainbreak view: %d script action(s) failed (above)\n",
+                 viewer.script_failures);
+    return 1;
   }
   return 0;
 }
