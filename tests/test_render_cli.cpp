@@ -314,6 +314,12 @@ TEST_CASE("snapshot --overlay: the video's frame at that tau, pixel for pixel", 
   CHECK(off.status == 2);
   CHECK_THAT(off.err, Catch::Contains("a multiple of speed / fps = 1") &&
                           Catch::Contains("nearest to 12.5: 12 or 13"));
+  // Frame times that cannot be typed exactly (k / 3 here) are accepted as printed, to 10 digits.
+  const auto third =
+      chainbreak("snapshot " + kBreaking + " --at 0.3333333333 --overlay all -o " +
+                 dir.path.string() + " --size 640x360 --set render.fps=30 --set render.speed=10");
+  INFO(third.err);
+  CHECK(third.status == 0);
   const auto late = chainbreak("snapshot " + kBreaking + " --at 500 --overlay all -o " +
                                dir.path.string() + common);
   CHECK(late.status == 2);

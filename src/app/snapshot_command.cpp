@@ -44,11 +44,15 @@ std::string snapshot_name(const std::string& scene, double tau) {
   return scene + buf;
 }
 
+// Ten digits: a frame time typed back as printed is accepted (within kFrameSlack).
 std::string number(double v) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
+  std::snprintf(buf, sizeof buf, "%.10g", v);
   return buf;
 }
+// How far (in frames) a requested tau may sit from a frame time: frame times such as k/6
+// cannot be typed exactly.
+constexpr double kFrameSlack = 1e-6;
 
 // With an overlay: the video's frames at those times, made as `render` makes them (its plan,
 // its FrameSource, its Overlay), so that a PNG equals the video's frame pixel for pixel.
@@ -71,7 +75,7 @@ int overlay_snapshots(const SnapshotOptions& o, const SceneDesc& scene,
   for (double tau : times) {
     const double k = tau / plan.tau_per_frame;
     const auto frame = static_cast<std::int64_t>(std::llround(k));
-    if (std::abs(k - static_cast<double>(frame)) > 1e-9 * std::max(1.0, k))
+    if (std::abs(k - static_cast<double>(frame)) > kFrameSlack)
       throw SceneError("--at " + o.at + ": with --overlay each tau must be a frame time of the " +
                        "video, a multiple of speed / fps = " + number(plan.tau_per_frame) +
                        "; nearest to " + number(tau) + ": " +
