@@ -13,6 +13,7 @@
 #include "viewer/phi_history.h"
 #include "viewer/record_clock.h"
 #include "viewer/script.h"
+#include "viewer/script_actions.h"
 #include "viewer/session.h"
 #include "viewer/spring_pick.h"
 
@@ -80,6 +81,25 @@ TEST_CASE("scripts parse into timed actions, and mistakes name the line", "[view
   CHECK_THAT(error("0 set colour 3\n"), Catch::Contains("unknown setting 'colour'"));
   CHECK_THAT(error("play\n"), Catch::Contains("not a frame number"));
   CHECK_THAT(error("0 snapshot\n"), Catch::Contains("needs an argument"));
+  // Values are checked when the script is read, before any window opens.
+  CHECK_THAT(error("0 set speed 0\n"), Catch::Contains("s.txt:1: set speed needs 0.1 .. 1000"));
+  CHECK_THAT(error("0 set speed fast\n"), Catch::Contains("needs a number"));
+  CHECK_THAT(error("0 set beads 2.7\n"), Catch::Contains("whole number of beads"));
+  CHECK_THAT(error("0 set beads 1e10\n"), Catch::Contains("whole number of beads"));
+  CHECK(error("0 set beads 40\n0 set gamma 1e-3\n") == "no error");
+}
+
+TEST_CASE("a script's drive setting must belong to the scene's drive", "[viewer]") {
+  cb::SceneDesc draft = cb::load_scene(std::string(CHAINBREAK_SCENES) + "/table_drive.toml");
+  cb::ViewerModel model;
+  cb::ViewerRequests requests;
+  const auto beta = cb::parse_script("0 set beta 0.1\n", "s.txt");
+  CHECK_THROWS_WITH(cb::apply_script(beta, draft, model, requests),
+                    Catch::Contains("the drive is table, which has no beta"));
+  const auto t0 = cb::parse_script("0 set t0 2\n", "s.txt");  // every drive has a t0
+  CHECK_NOTHROW(cb::apply_script(t0, draft, model, requests));
+  CHECK(draft.drive.t0 == 2.0);
+  CHECK(requests.apply_settings);
 }
 
 TEST_CASE("the phi history keeps every spring and halves itself when full", "[viewer]") {

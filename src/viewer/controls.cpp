@@ -108,7 +108,8 @@ void draw_controls(ViewerModel& model, SceneDesc& draft, const Session& session,
   ImGui::SameLine();
   if (ImGui::Button("Help")) model.show_help = !model.show_help;
   ImGui::SetNextItemWidth(200);
-  if (slider("speed (tau/s)", model.speed, 0.1, 1000.0, true)) requests.speed_changed = true;
+  if (slider("speed (tau/s)", model.speed, kMinSpeed, kMaxSpeed, true))
+    requests.speed_changed = true;
 
   ImGui::PushItemWidth(200);
   if (ImGui::CollapsingHeader("Chain and drive", ImGuiTreeNodeFlags_DefaultOpen)) {

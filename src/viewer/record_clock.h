@@ -2,8 +2,9 @@
 // at the speed the session was shown. The window shows frames when it can (55-75 a second at
 // 1080p here, fewer on a busy machine) while the video has a fixed rate (the scene's fps):
 // by wall time, a displayed frame stands for the video frames whose times have come since
-// the last one; none when the window runs ahead of the video's rate, several (the same
-// picture repeated) when it falls behind. In script mode every displayed frame advances the
+// the last one; none when the window runs ahead of the video's rate, several when it falls
+// behind (the picture that was on screen for the earlier ones, the new one for the last:
+// viewer_outputs.cpp). In script mode every displayed frame advances the
 // physics by exactly one video frame, so the clock is not used: one frame each.
 #pragma once
 

@@ -1,14 +1,24 @@
 #include "viewer/script.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
 #include "scene/scene.h"
+#include "viewer/viewer_model.h"
 
 namespace cb {
 
 namespace {
+
+std::string speed_range() {
+  char text[64];
+  std::snprintf(text, sizeof text, "%g .. %g", kMinSpeed, kMaxSpeed);
+  return text;
+}
 
 constexpr const char* kKeys[] = {"speed",     "beads",  "gamma", "threshold", "beta",
                                  "amplitude", "period", "t0",    "view"};
@@ -54,6 +64,17 @@ std::vector<ScriptAction> parse_script(const std::string& text, const std::strin
       if (!known_key(a.key))
         fail("unknown setting '" + a.key +
              "'; expected speed, beads, gamma, threshold, beta, amplitude, period, t0 or view");
+      if (a.key != "view") {
+        char* end = nullptr;
+        const double v = std::strtod(a.argument.c_str(), &end);
+        if (*end != '\0' || !std::isfinite(v))
+          fail("set " + a.key + " needs a number, got '" + a.argument + "'");
+        if (a.key == "speed" && (v < kMinSpeed || v > kMaxSpeed))
+          fail("set speed needs " + speed_range() + " tau/s (the slider's range), got " +
+               a.argument);
+        if (a.key == "beads" && (v != std::floor(v) || v < 1 || v > 1e7))
+          fail("set beads needs a whole number of beads, 1 .. 10^7, got " + a.argument);
+      }
     } else if (act == "snapshot" || act == "screenshot" || act == "save" || act == "record" ||
                act == "select") {
       if (!(words >> a.argument)) fail(act + " needs an argument, e.g. 10 " + act + " out");

@@ -26,6 +26,15 @@ void apply_setting(const ScriptAction& a, SceneDesc& draft, ViewerModel& model,
     requests.speed_changed = true;
     return;
   }
+  // A drive's parameter on a drive that has none of that name would silently do nothing.
+  const DriveType t = draft.drive.type;
+  const bool fits = (a.key != "beta" || t == DriveType::Ramp) &&
+                    (a.key != "amplitude" || t == DriveType::Step || t == DriveType::Sine) &&
+                    (a.key != "period" || t == DriveType::Sine);
+  if (!fits)
+    throw SceneError("script line " + std::to_string(a.line) + ": set " + a.key +
+                     ": the drive is " + drive_type_name(t) + ", which has no " + a.key +
+                     " (beta: ramp; amplitude: step, sine; period: sine)");
   if (a.key == "beads") draft.chain.beads = static_cast<int>(v);
   if (a.key == "gamma") draft.chain.gamma = v;
   if (a.key == "threshold") draft.chain.threshold = v;

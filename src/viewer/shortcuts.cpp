@@ -4,6 +4,8 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include <algorithm>
+
 #include "viewer/controls.h"
 
 namespace cb {
@@ -20,11 +22,11 @@ void handle_shortcuts(ViewerModel& model, SceneDesc& draft, ViewerRequests& requ
   }
   if (pressed(GLFW_KEY_R)) requests.restart = true;
   if (pressed(GLFW_KEY_EQUAL) || pressed(GLFW_KEY_KP_ADD)) {
-    model.speed *= 2.0;
+    model.speed = std::min(model.speed * 2.0, kMaxSpeed);
     requests.speed_changed = true;
   }
   if (pressed(GLFW_KEY_MINUS) || pressed(GLFW_KEY_KP_SUBTRACT)) {
-    model.speed *= 0.5;
+    model.speed = std::max(model.speed * 0.5, kMinSpeed);
     requests.speed_changed = true;
   }
   if (pressed(GLFW_KEY_V)) {

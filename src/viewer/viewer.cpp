@@ -48,6 +48,7 @@ struct Viewer {
   std::optional<ScriptPlayer> script;
   std::int64_t display_frame = 0;
   int script_failures = 0;  // script actions that failed (set_status)
+  double grid_carry = 0.0;  // fixed steps: grid frames owed to the next displayed frame
   FrameTimes times;
   bool fixed_step = false;  // script or benchmark: a fixed tau per displayed frame
 
@@ -86,6 +87,7 @@ struct Viewer {
       SceneDesc previous = std::exchange(session.scene(), std::move(next));
       try {
         session.restart();
+        grid_carry = 0.0;
       } catch (...) {
         session.scene() = std::move(previous);
         throw;
@@ -142,9 +144,15 @@ struct Viewer {
       return;
     }
     if (fixed_step) {
-      // The scene's frame rate sets the tau of one displayed frame: speed / fps.
-      const double frames = model.speed / p.frame.fps / p.tau_per_frame;
-      session.advance(std::max<std::int64_t>(1, std::llround(frames)));
+      // The scene's frame rate sets the tau of one displayed frame: speed / fps, in grid
+      // frames of the plan (made at the speed the run started with). A speed changed since
+      // need not be a whole number of grid frames: the fraction is carried to the next
+      // displayed frame, so the tau per frame is right on average (a slower speed moves the
+      // chain every few displayed frames).
+      grid_carry += model.speed / p.frame.fps / p.tau_per_frame;
+      const auto frames = static_cast<std::int64_t>(std::floor(grid_carry + 1e-9));
+      grid_carry -= static_cast<double>(frames);
+      if (frames > 0) session.advance(frames);
       return;
     }
     const double start = Window::now();

@@ -7,6 +7,10 @@
 
 namespace cb {
 
+// The speed's range, for the slider, the + and - keys and scripts alike: below it the run's
+// pre-pass (at a step shrunk to the frame time) takes seconds; above it a frame is the run.
+inline constexpr double kMinSpeed = 0.1, kMaxSpeed = 1000.0;
+
 struct ViewerModel {
   bool playing = false;
   double speed = 10.0;  // tau per second of wall time (script mode: per 1/fps of a frame)

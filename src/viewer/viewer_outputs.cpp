@@ -67,6 +67,7 @@ std::string ViewerOutputs::start_recording(int width, int height, int fps, const
   }
   video_frames_ = 0;
   clock_.reset();
+  shown_ = Image();
   real_time_ = real_time;
   return "recording " + video_path_ + " (M or Record stops)";
 }
@@ -88,15 +89,24 @@ std::string ViewerOutputs::stop_recording() {
 
 void ViewerOutputs::push(Image frame, double now) {
   if (!video_) return;
-  int copies = 1;
-  if (real_time_) {
-    if (!clock_) clock_.emplace(video_fps_, now);
-    copies = clock_->frames_at(now);
+  if (!real_time_) {
+    video_->push(std::move(frame));
+    ++video_frames_;
+    return;
   }
-  for (int k = 0; k < copies; ++k) {
-    video_->push(k + 1 < copies ? frame : std::move(frame));
+  if (!clock_) clock_.emplace(video_fps_, now);
+  // The video frames whose times came since the last displayed frame showed the picture that
+  // was on screen then (`shown_`); only the newest one shows this frame.
+  const int due = clock_->frames_at(now);
+  for (int k = 0; k + 1 < due; ++k) {
+    video_->push(shown_.rgba.empty() ? frame : shown_);
     ++video_frames_;
   }
+  if (due > 0) {
+    video_->push(frame);
+    ++video_frames_;
+  }
+  shown_ = std::move(frame);
 }
 
 }  // namespace cb

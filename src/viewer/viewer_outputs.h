@@ -45,6 +45,7 @@ class ViewerOutputs {
   long long video_frames_ = 0;
   std::optional<RecordClock> clock_;  // real-time recordings: started by the first frame
   bool real_time_ = false;
+  Image shown_;  // real time: the picture on screen since the last displayed frame
   int video_fps_ = 30;
 };
 
