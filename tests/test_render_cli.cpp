@@ -330,6 +330,16 @@ TEST_CASE("snapshot --overlay: the video's frame at that tau, pixel for pixel", 
   CHECK_THAT(small.err, Catch::Contains("too small for the overlay"));
 }
 
+TEST_CASE("snapshot: two times that would share a file name are refused", "[render_cli]") {
+  TempDir dir;
+  const auto r = chainbreak("snapshot " + kBreaking + " --at 1.0001,1.0002 -o " +
+                            dir.path.string() + " --size 320x180");
+  CHECK(r.status == 2);
+  CHECK_THAT(r.err, Catch::Contains("ramp_pulled_end_tau_000001.000.png") &&
+                        Catch::Contains("at least 0.001 apart"));
+  CHECK(dir.names().empty());  // refused before anything was drawn
+}
+
 TEST_CASE("render: Ctrl-C exits 130 and keeps a playable .partial.mp4", "[render_cli]") {
   if (!gl_available()) return;
   TempDir dir;

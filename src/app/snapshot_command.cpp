@@ -113,9 +113,19 @@ int overlay_snapshots(const SnapshotOptions& o, const SceneDesc& scene,
 
 }  // namespace
 
+// Two times whose names round to the same file would overwrite one another.
+void require_distinct_names(const std::string& scene, const std::vector<double>& times) {
+  for (std::size_t i = 1; i < times.size(); ++i)
+    if (snapshot_name(scene, times[i]) == snapshot_name(scene, times[i - 1]))
+      throw SceneError("--at: tau " + number(times[i - 1]) + " and " + number(times[i]) +
+                       " would both be written as " + snapshot_name(scene, times[i]) +
+                       "; the file names keep 3 decimals, so give times at least 0.001 apart");
+}
+
 int snapshot_command(const SnapshotOptions& o) {
   const SceneDesc scene = load_scene(o.scene, o.overrides);
   const std::vector<double> times = parse_times(o.at);
+  require_distinct_names(scene.name, times);
   if (!o.overlay.empty() && o.overlay != "none") return overlay_snapshots(o, scene, times);
   const RenderDesc frame = frame_settings(scene, o.frame);
   require_writable_dir(o.out_dir);

@@ -94,7 +94,15 @@ struct Viewer {
       }
       if (apply_draft) model.status.clear();  // an earlier rejected edit is no longer news
     } catch (const std::exception& e) {
-      set_status(e.what(), true);
+      // The draft is checked as a scene text nobody sees: drop its "name:line:col: " so the
+      // message starts at the key it names (e.g. "chain.threshold must be > 0 ...").
+      std::string why = e.what();
+      const std::string prefix = "the viewer's settings:";
+      if (why.rfind(prefix, 0) == 0) {
+        const auto text = why.find(": ", prefix.size());
+        if (text != std::string::npos) why = "not applied: " + why.substr(text + 2);
+      }
+      set_status(why, true);
       const std::string view = draft.render.view;  // the view is not part of a restart
       draft = session.scene();
       draft.render.view = view;
