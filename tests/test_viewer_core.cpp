@@ -87,6 +87,8 @@ TEST_CASE("scripts parse into timed actions, and mistakes name the line", "[view
   CHECK_THAT(error("0 set beads 2.7\n"), Catch::Contains("whole number of beads"));
   CHECK_THAT(error("0 set beads 1e10\n"), Catch::Contains("whole number of beads"));
   CHECK(error("0 set beads 40\n0 set gamma 1e-3\n") == "no error");
+  CHECK_THAT(error("5 record a.mp4\n9 record stop\n9 record b.mp4\n"),
+             Catch::Contains("s.txt:3: a second record action in frame 9"));
 }
 
 TEST_CASE("a script's drive setting must belong to the scene's drive", "[viewer]") {

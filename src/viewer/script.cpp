@@ -35,6 +35,7 @@ std::vector<ScriptAction> parse_script(const std::string& text, const std::strin
   std::string line;
   int number = 0;
   std::int64_t last_frame = 0;
+  std::int64_t last_record = -1;  // a frame takes one record action (start or stop)
   while (std::getline(lines, line)) {
     ++number;
     line = line.substr(0, line.find('#'));
@@ -78,6 +79,10 @@ std::vector<ScriptAction> parse_script(const std::string& text, const std::strin
     } else if (act == "snapshot" || act == "screenshot" || act == "save" || act == "record" ||
                act == "select") {
       if (!(words >> a.argument)) fail(act + " needs an argument, e.g. 10 " + act + " out");
+      if (act == "record" && a.frame == last_record)
+        fail("a second record action in frame " + std::to_string(a.frame) +
+             "; a frame starts or stops one recording: put it on the next frame");
+      if (act == "record") last_record = a.frame;
     } else if (act == "step") {
       if (!(words >> a.argument)) a.argument = "1";
     } else if (act != "play" && act != "pause" && act != "restart" && act != "quit") {

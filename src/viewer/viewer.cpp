@@ -204,20 +204,30 @@ struct Viewer {
     }
   }
 
-  // Snapshot and recording: the frame's pixels, from the renderer's framebuffer.
+  // Snapshot and recording: the frame's pixels, from the renderer's framebuffer; as RGBA
+  // only when a snapshot or a GIF needs it, Y'CbCr for an MP4 or WebM recording.
   void write_outputs(const ViewerRequests& r) {
-    Image image;
-    renderer.read(image);
-    if (r.snapshot) set_status(outputs.snapshot(image, session.tau(), r.snapshot_path));
+    std::optional<Image> rgba;
+    const auto image = [&]() -> Image& {
+      if (!rgba) renderer.read(rgba.emplace());
+      return *rgba;
+    };
+    if (r.snapshot) set_status(outputs.snapshot(image(), session.tau(), r.snapshot_path));
     if (r.record) {
       const int fps = static_cast<int>(std::lround(session.plan().frame.fps));
       set_status(outputs.recording() ? outputs.stop_recording()
-                                     : outputs.start_recording(image.width, image.height, fps,
-                                                               r.record_path, !fixed_step));
+                                     : outputs.start_recording(renderer.width(), renderer.height(),
+                                                               fps, r.record_path, !fixed_step));
     }
     if (outputs.recording()) {
       try {
-        outputs.push(std::move(image), Window::now());
+        if (const auto size = outputs.yuv420_size()) {
+          Yuv420Image picture = outputs.spare_yuv420();
+          renderer.read_yuv420(picture, size->width, size->height);
+          outputs.push(std::move(picture), Window::now());
+        } else {
+          outputs.push(image(), Window::now());
+        }
       } catch (const OutputError& e) {
         set_status(std::string("record failed: ") + e.what());
         outputs.stop_recording();

@@ -67,7 +67,8 @@ std::string ViewerOutputs::start_recording(int width, int height, int fps, const
   }
   video_frames_ = 0;
   clock_.reset();
-  shown_ = Image();
+  shown_rgba_ = Image();
+  shown_yuv_ = Yuv420Image();
   real_time_ = real_time;
   return "recording " + video_path_ + " (M or Record stops)";
 }
@@ -87,26 +88,46 @@ std::string ViewerOutputs::stop_recording() {
   return status;
 }
 
-void ViewerOutputs::push(Image frame, double now) {
-  if (!video_) return;
+// The video frames whose times came since the last displayed frame showed the picture that
+// was on screen then (`shown`); only the newest one shows this frame (record_clock.h).
+template <class Picture, class Push>
+void ViewerOutputs::push_timed(Picture frame, double now, Picture& shown, Push push) {
   if (!real_time_) {
-    video_->push(std::move(frame));
+    push(std::move(frame));
     ++video_frames_;
     return;
   }
   if (!clock_) clock_.emplace(video_fps_, now);
-  // The video frames whose times came since the last displayed frame showed the picture that
-  // was on screen then (`shown_`); only the newest one shows this frame.
   const int due = clock_->frames_at(now);
+  const bool have_shown = shown.width > 0;
   for (int k = 0; k + 1 < due; ++k) {
-    video_->push(shown_.rgba.empty() ? frame : shown_);
+    push(have_shown ? shown : frame);
     ++video_frames_;
   }
   if (due > 0) {
-    video_->push(frame);
+    push(frame);
     ++video_frames_;
   }
-  shown_ = std::move(frame);
+  shown = std::move(frame);
+}
+
+void ViewerOutputs::push(Image frame, double now) {
+  if (!video_) return;
+  push_timed(std::move(frame), now, shown_rgba_, [this](Image p) { video_->push(std::move(p)); });
+}
+
+std::optional<PictureSize> ViewerOutputs::yuv420_size() const {
+  return video_ ? video_->yuv420_size() : std::nullopt;
+}
+
+Yuv420Image ViewerOutputs::spare_yuv420() {
+  return video_ ? video_->spare_yuv420() : Yuv420Image();
+}
+
+void ViewerOutputs::push(Yuv420Image frame, double now) {
+  if (!video_) return;
+  push_timed(std::move(frame), now, shown_yuv_,
+             [this](Yuv420Image p) { video_->push_yuv420(std::move(p)); });
 }
 
 }  // namespace cb
