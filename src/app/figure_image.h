@@ -13,8 +13,8 @@ inline Image figure_image(Renderer& renderer, FigureDrawer& drawer, const Figure
   RenderSnapshot blank;  // no layers: the renderer only clears
   blank.width = renderer.width();
   blank.height = renderer.height();
-  blank.background = Color{kOverlayBackground.r / 255.0f, kOverlayBackground.g / 255.0f,
-                           kOverlayBackground.b / 255.0f, 1.0f};
+  const Rgb8 bg = theme(ThemeName::Dark).background;
+  blank.background = Color{bg.r / 255.0f, bg.g / 255.0f, bg.b / 255.0f, 1.0f};
   blank.layers.resize(kLayerCount);
   renderer.draw(blank);
   drawer.draw(figure);

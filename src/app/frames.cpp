@@ -52,6 +52,10 @@ RenderDesc frame_settings(const SceneDesc& scene, const FrameOptions& o) {
       throw SceneError("--view " + o.view + ": expected longitudinal, transverse or both");
     d.view = o.view;
   }
+  if (!o.theme.empty()) {
+    if (!parse_theme(o.theme)) throw SceneError("--theme " + o.theme + ": expected dark or light");
+    d.theme = o.theme;
+  }
   return d;
 }
 
@@ -112,6 +116,7 @@ SnapshotStyle snapshot_style(const SceneDesc& scene, const RenderDesc& frame,
   s.width = frame.width;
   s.height = frame.height;
   parse_view(frame.view, s.view);
+  s.theme = parse_theme(frame.theme).value_or(ThemeName::Dark);
   s.psi_range = extent.psi_range;
   s.force_range = extent.force_range;
   s.threshold = scene.chain.breakable() ? scene.chain.threshold : 0.0;

@@ -19,6 +19,7 @@ struct FrameOptions {
   std::string size;     // "WxH" or empty
   std::string quality;  // l | m | h | k or empty
   std::string view;     // longitudinal | transverse | both or empty
+  std::string theme;    // dark | light or empty
   std::string gl;       // auto | osmesa | egl or empty (CHAINBREAK_GL)
 };
 

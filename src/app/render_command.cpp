@@ -91,7 +91,7 @@ int render_command(const RenderOptions& o) {
   std::unique_ptr<Overlay> overlay;
   if (plan.overlay_layout.enabled)
     overlay = std::make_unique<Overlay>(plan.frame.width, plan.frame.height, plan.frame.fps,
-                                        plan.overlay);
+                                        plan.overlay, plan.style.theme);
   if (!o.quiet) {
     std::fprintf(stderr, "render %s: %lld frames %dx%d at %g fps (%g tau/s, dt %g) -> %s\n",
                  scene.name.c_str(), static_cast<long long>(plan.frames), plan.frame.width,

@@ -90,7 +90,8 @@ int overlay_snapshots(const SnapshotOptions& o, const SceneDesc& scene,
     frames.push_back(frame);
   }
   Canvas canvas = make_canvas(o.frame, plan.frame.width, plan.frame.height);
-  Overlay overlay(plan.frame.width, plan.frame.height, plan.frame.fps, plan.overlay);
+  Overlay overlay(plan.frame.width, plan.frame.height, plan.frame.fps, plan.overlay,
+                  plan.style.theme);
   FrameSource source(scene, plan, 1);
   for (std::size_t i = 0; i < times.size(); ++i) {
     if (g_interrupted) return 130;

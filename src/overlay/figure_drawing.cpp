@@ -66,7 +66,7 @@ struct PanelDraw {
         const float s =
             static_cast<float>(h.values[static_cast<std::size_t>(r) * h.columns + k] / h.scale);
         c.draw->AddRectFilled(ImVec2(xs[k], ys[r + 1]), ImVec2(xs[k + 1], ys[r]),
-                              col(overlay_strain_rgb(std::clamp(s, -1.0f, 1.0f))));
+                              col(overlay_strain_rgb(std::clamp(s, -1.0f, 1.0f), ThemeName::Dark)));
       }
   }
 
@@ -77,15 +77,15 @@ struct PanelDraw {
     for (int y = 0; y < static_cast<int>(b.h); ++y) {
       const float s = 1.0f - 2.0f * (y + 0.5f) / b.h;
       c.draw->AddRectFilled(ImVec2(b.x, b.y + y), ImVec2(b.right(), b.y + y + 1),
-                            col(overlay_strain_rgb(s)));
+                            col(overlay_strain_rgb(s, ThemeName::Dark)));
     }
-    c.draw->AddRect(ImVec2(b.x, b.y), ImVec2(b.right(), b.bottom()), col(kFrame));
+    c.draw->AddRect(ImVec2(b.x, b.y), ImVec2(b.right(), b.bottom()), col(c.theme.axis));
     for (double v : {-1.0, -0.5, 0.0, 0.5, 1.0}) {
       const float y = b.y + static_cast<float>(0.5 * (1.0 - v)) * b.h;
-      text(c, c.fonts.mono, b.right() + 0.3f * fs, y - 0.5f * fs, kDim, format("%g", v * h.scale),
+      text(c, c.fonts.mono, b.right() + 0.3f * fs, y - 0.5f * fs, c.theme.text_dim, format("%g", v * h.scale),
            0.0f, 0.85f);
     }
-    text_sub(c, c.fonts.sans, b.x + 0.5f * b.w, b.y - 1.3f * fs, kText, h.label, 0.5f, 0.85f);
+    text_sub(c, c.fonts.sans, b.x + 0.5f * b.w, b.y - 1.3f * fs, c.theme.text, h.label, 0.5f, 0.85f);
   }
 
   void line_series(const Series& s) const {
@@ -184,13 +184,13 @@ struct PanelDraw {
     const Box& a = l.mapping.area;
     if (p.inset) {  // cover what lies below it
       c.draw->AddRectFilled(ImVec2(l.box.x, l.box.y), ImVec2(l.box.right(), l.box.bottom()),
-                            col(kOverlayBackground));
+                            col(c.theme.background));
     }
     panel(c, l.box, p.title);
     axes(c, l.box, l.mapping, axis_ticks(p.x, 10), axis_ticks(p.y, 8), "", p.heatmap.empty());
-    text_sub(c, c.fonts.sans, a.x + 0.5f * a.w, a.bottom() + 1.45f * fs, kText, p.x.label, 0.5f,
+    text_sub(c, c.fonts.sans, a.x + 0.5f * a.w, a.bottom() + 1.45f * fs, c.theme.text, p.x.label, 0.5f,
              0.9f);
-    text_sub(c, c.fonts.sans, a.x, a.y - 1.3f * fs, kText, p.y.label, 0.0f, 0.9f);
+    text_sub(c, c.fonts.sans, a.x, a.y - 1.3f * fs, c.theme.text, p.y.label, 0.0f, 0.9f);
     c.draw->PushClipRect(ImVec2(a.x, a.y), ImVec2(a.right(), a.bottom()), true);
     if (!p.heatmap.empty()) heatmap();
     for (const Series& s : p.series) series(s);
@@ -198,7 +198,7 @@ struct PanelDraw {
       text_sub(c, c.fonts.sans, px(n.x), py(n.y) - 0.45f * fs, rgb(n.colour), n.text, 0.0f, 0.85f);
     c.draw->PopClipRect();
     if (!p.heatmap.empty()) colour_bar();
-    c.draw->AddRect(ImVec2(a.x, a.y), ImVec2(a.right(), a.bottom()), col(kFrame), 0.0f, 0, 1.0f);
+    c.draw->AddRect(ImVec2(a.x, a.y), ImVec2(a.right(), a.bottom()), col(c.theme.axis), 0.0f, 0, 1.0f);
     legends();
   }
 };
@@ -251,7 +251,7 @@ void FigureDrawer::draw(const Figure& figure) {
   ImGui::NewFrame();
   im.marker.texture = ImGui::GetIO().Fonts->TexID;
   Canvas canvas{Pass::Static, ImGui::GetBackgroundDrawList(), im.fonts, im.marker, im.layout,
-                im.no_data};
+                im.no_data, cb::theme(ThemeName::Dark)};
   for (const Panel& p : figure.panels) {
     const FigurePanelLayout l = figure_panel_layout(p, im.width, im.height);
     PanelDraw{canvas, p, l, im.layout.font_px, im.layout.line_px}.draw();

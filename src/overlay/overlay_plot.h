@@ -8,20 +8,6 @@
 
 namespace cb::overlay_detail {
 
-// The theme, on the snapshot's dark background (overlay.h has the background and the series).
-constexpr OverlayRgb kText{224, 224, 230};
-constexpr OverlayRgb kDim{150, 153, 160};
-constexpr OverlayRgb kBorder{58, 60, 67};
-constexpr OverlayRgb kGrid{40, 42, 48};
-constexpr OverlayRgb kFrame{78, 80, 88};
-constexpr OverlayRgb kThreshold{213, 94, 0};  // Okabe-Ito vermillion
-constexpr OverlayRgb kCursor{110, 112, 120};
-constexpr OverlayRgb kTotal{236, 236, 240};
-constexpr OverlayRgb kKinetic{204, 121, 167};   // Okabe-Ito reddish purple
-constexpr OverlayRgb kPotential{240, 228, 66};  // Okabe-Ito yellow
-constexpr OverlayRgb kBar{86, 180, 233};
-constexpr OverlayRgb kBreak{255, 200, 90};  // the chain's break markers' amber
-
 ImU32 col(const OverlayRgb& c, float alpha = 1.0f);
 std::string format(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
 std::string subscript(int value);  // "15" -> "\u2081\u2085" (UTF-8 subscript digits)

@@ -39,6 +39,9 @@ struct RenderDesc {
   double fps = 30.0;                  // frames per second of video
   double speed = 10.0;                // tau per second of video
   std::string view = "longitudinal";  // longitudinal | transverse | both
+  // dark (projector; the default for videos: the strain map's tension end is brightest and
+  // reads best on black in a dim hall) | light (white, for handouts and papers)
+  std::string theme = "dark";
   bool overlay = true;                // videos: the HUD and plots under the chain (src/overlay)
   // Which parts of the overlay: the HUD; phi_1, phi_N/2, phi_N and energy vs tau; the
   // space-time picture of the strain; the normal-mode bars.

@@ -50,6 +50,7 @@ constexpr KeySpec kSchema[] = {
     {"render", "fps", Kind::Number, "fps = 30"},
     {"render", "speed", Kind::Number, "speed = 10.0"},
     {"render", "view", Kind::String, "view = \"longitudinal\""},
+    {"render", "theme", Kind::String, "theme = \"dark\""},
     {"render", "overlay", Kind::Bool, "overlay = true"},
     {"render", "overlay_hud", Kind::Bool, "overlay_hud = true"},
     {"render", "overlay_plots", Kind::Bool, "overlay_plots = true"},

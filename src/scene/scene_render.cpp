@@ -43,6 +43,11 @@ RenderDesc read_render(const SceneReader& r) {
     r.fail("render", "view",
            "unknown render.view '" + d.view + "'; " +
                suggest(d.view, {"longitudinal", "transverse", "both"}, "\"", "\""));
+  d.theme = r.string("render", "theme").value_or(d.theme);
+  if (d.theme != "dark" && d.theme != "light")
+    r.fail("render", "theme",
+           "unknown render.theme '" + d.theme + "'; " +
+               suggest(d.theme, {"dark", "light"}, "\"", "\""));
   d.overlay = r.boolean("render", "overlay").value_or(d.overlay);
   d.overlay_hud = r.boolean("render", "overlay_hud").value_or(d.overlay_hud);
   d.overlay_plots = r.boolean("render", "overlay_plots").value_or(d.overlay_plots);

@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "physics/chain.h"
+#include "text/text_layout.h"
+#include "theme/theme.h"
 
 namespace cb {
 
@@ -52,18 +54,15 @@ struct Rect {  // filled axis-aligned rectangle (wall, colour bar cells, flash, 
   Color color;
 };
 
-// Labels are drawn with a small built-in ASCII font: `text` with every byte outside
-// printable ASCII (32..126, and newline) replaced by '?' (UTF-8 "tau" would otherwise index
-// the font's glyph table out of bounds).
-std::string printable_ascii(const std::string& text);
-// Width in pixels of `text` at cap height `size`, exactly as the renderer draws it.
-float text_width(const std::string& text, float size);
-
+// A line of text in the project's typeface (UTF-8 with real glyphs: τ, φ, ψ; "_c" and "_{N/2}"
+// are subscripts), laid out by text/text_layout.h: text_width(text, size, face) is exactly
+// the width the renderer draws.
 struct Label {
   std::string text;
-  float x = 0, y = 0;  // top-left of the text, pixels
-  float size = 12;     // cap height in pixels
+  float x = 0, y = 0;  // left edge and the top of its capitals, pixels
+  float size = 14;     // pixel height of the font (ascent - descent), as Dear ImGui's
   Color color;
+  FontFace face = FontFace::Sans;
 };
 
 // One drawing layer; layers are drawn in order (back to front), each shape kind in one
@@ -107,7 +106,8 @@ struct PanelLayout {
 // Where everything goes, from the style and N alone: the same for every frame of a video.
 struct SnapshotLayout {
   float margin = 0;
-  float text_size = 0;      // cap height of labels (a whole multiple of the font's 7 px)
+  float font_px = 0;        // labels' pixel height: frame_text_px(frame height), as the overlay's
+  float text_size = 0;      // the layout's unit: the labels' cap height, pixels
   float x_wall = 0;         // the wall's face, x of bead 0
   float x_right = 0;        // bead N at psi_N = psi_range (longitudinal) or at rest (transverse)
   float arrow_max = 0;      // length of the force arrow at |f| = force_range
@@ -138,6 +138,7 @@ struct RenderSnapshot {
 // How a frame is laid out; the same for every frame of a video so nothing jumps.
 struct SnapshotStyle {
   int width = 1280, height = 720;
+  ThemeName theme = ThemeName::Dark;
   View view = View::Longitudinal;
   // The largest |psi| expected in the run (> 0): the longitudinal view fits bead N at
   // psi_N = psi_range, the transverse view maps |psi| = psi_range to the panel's half height.
@@ -156,7 +157,8 @@ struct SnapshotStyle {
 // tension orange) with lightness rising monotonically from s = -1 to s = +1, so compression
 // and tension differ in greyscale print and for colour-blind viewers; saturates visibly
 // (towards a hot, brighter tone) as |s| approaches 1.
-Color strain_color(double s);
+Color strain_color(double s, ThemeName theme);
+Color strain_color(double s);  // the dark theme's
 
 // The layout build_snapshot uses for this style and chain.
 SnapshotLayout snapshot_layout(const SnapshotStyle& style, const ChainParams& params);

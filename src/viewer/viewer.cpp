@@ -57,13 +57,15 @@ struct Viewer {
         window(w),
         session(scene, o.render),
         draft(session.scene()),
-        ui(w.handle()),
+        ui(w.handle(), session.plan().style.theme),
         renderer(session.plan().frame.width, session.plan().frame.height),
         outputs(o.out_dir, scene.name) {
     const RenderPlan& p = session.plan();
     draft.render.view = p.frame.view;  // --view, when given, over the scene's
+    draft.render.theme = p.frame.theme;
     if (p.overlay_layout.enabled)
-      overlay = std::make_unique<Overlay>(p.frame.width, p.frame.height, p.frame.fps, p.overlay);
+      overlay = std::make_unique<Overlay>(p.frame.width, p.frame.height, p.frame.fps, p.overlay,
+                                          p.style.theme);
     if (!o.script.empty()) script.emplace(std::move(actions));
     fixed_step = script || o.benchmark_frames > 0;
     model.script = fixed_step;
