@@ -66,6 +66,8 @@ struct RenderOptions {
   FrameOptions frame;
   bool no_overlay = false;  // --no-overlay
   std::string overlay;      // --overlay hud,plots,spacetime,modes; empty: the scene's [render]
+  double slowmo = -1;        // --slowmo F; < 0: the scene's [render] slowmo
+  double slowmo_window = 0;  // --slowmo-window W; 0: the scene's
 };
 int render_command(const RenderOptions& options);
 

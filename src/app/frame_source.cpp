@@ -5,14 +5,14 @@ namespace cb {
 FrameSource::FrameSource(const SceneDesc& scene, const RenderPlan& plan, int threads)
     : chain_(scene.chain),
       plan_(plan),
-      sim_(scene.chain, make_forcing(scene.drive), {plan.dt, threads}) {
+      sim_(scene.chain, make_forcing(scene.drive), {plan.grid.dt(), threads}) {
   if (plan.overlay_layout.enabled)
     history_ = std::make_unique<OverlayHistory>(scene.chain, scene.drive, plan.overlay_setup);
 }
 
 bool FrameSource::record_through(std::int64_t k) {
   for (; next_ <= k; ++next_) {
-    if (!sim_.advance_to(next_ * plan_.substeps)) return false;
+    if (!sim_.advance_to(plan_.grid.step(next_))) return false;
     if (history_) history_->record(next_, sim_.state(), sim_.force_now());
   }
   return true;
@@ -21,6 +21,9 @@ bool FrameSource::record_through(std::int64_t k) {
 std::optional<RenderSnapshot> FrameSource::frame(std::int64_t k) {
   if (!record_through(k)) return std::nullopt;
   RenderSnapshot snap = build_snapshot(sim_.state(), chain_, sim_.force_now(), plan_.style);
+  // Slow motion shows as a tag while it lasts (this frame's pace is below normal).
+  if (const double speed = plan_.grid.speed(k); speed < 1.0 - 1e-9)
+    add_slow_motion_tag(snap, speed, plan_.style.theme);
   if (history_) snap.overlay = history_->share();
   return snap;
 }

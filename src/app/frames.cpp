@@ -77,12 +77,12 @@ void sample_overlay(const ChainState& state, const ChainParams& params, RunExten
 }  // namespace
 
 RunExtent measure_run(const SceneDesc& scene, double tau_stop, double dt,
-                      std::int64_t sample_every) {
+                      std::int64_t sample_every, bool every_break) {
   Integrator sim(scene.chain, make_forcing(scene.drive), {dt, 1});
   RunExtent e;
   e.tau_stop = tau_stop;
   double psi = 0.0, force = 0.0, strain = 0.0;
-  const auto last = static_cast<std::int64_t>(std::llround(tau_stop / dt));
+  auto last = static_cast<std::int64_t>(std::llround(tau_stop / dt));
   bool broken = false;
   while (sim.state().step < last) {
     if (!sim.step()) throw std::runtime_error(sim.error());
@@ -101,9 +101,15 @@ RunExtent measure_run(const SceneDesc& scene, double tau_stop, double dt,
       if (scene.integrator.after_break)
         e.tau_stop =
             std::min(tau_stop, sim.state().breaks.front().tau + *scene.integrator.after_break);
-      if (e.tau_stop < tau_stop) break;
+      if (e.tau_stop < tau_stop) {
+        if (!every_break) break;
+        // Slow motion needs every break the video shows: on to where the video stops.
+        last = static_cast<std::int64_t>(std::floor(e.tau_stop / dt + 1e-9));
+      }
     }
   }
+  for (const BreakEvent& b : sim.state().breaks)
+    if (b.tau <= e.tau_stop) e.breaks.push_back(b);
   e.psi_range = std::max(psi, 1e-6);
   e.force_range = std::max(force, 1e-6);
   e.strain_range = std::max(strain, 1e-6);

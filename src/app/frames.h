@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "gl/gl_context.h"
 #include "render/renderer.h"
@@ -40,9 +41,12 @@ struct RunExtent {
   double strain_range = 1.0;  // the largest |phi| (colour scale of an unbreakable chain)
   double tau_stop = 0.0;
   double phi_min = 0.0, phi_max = 0.0, energy_max = 0.0;  // sampled (see above)
+  std::vector<BreakEvent> breaks;  // the first break, or every break up to tau_stop
 };
+// With `every_break` it runs on to where the video stops to find every break in it (slow
+// motion slows down around each); otherwise it stops at the first break.
 RunExtent measure_run(const SceneDesc& scene, double tau_stop, double dt,
-                      std::int64_t sample_every = 0);
+                      std::int64_t sample_every = 0, bool every_break = false);
 
 SnapshotStyle snapshot_style(const SceneDesc& scene, const RenderDesc& frame,
                              const RunExtent& extent);

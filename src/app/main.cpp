@@ -130,6 +130,11 @@ int main(int argc, char** argv) {
       ->add_option("--overlay", render.overlay,
                    "Overlay parts to draw: hud,plots,spacetime,modes (any subset), all or none")
       ->excludes(no_overlay);
+  render_cmd->add_option("--slowmo", render.slowmo,
+                         "Slow motion around every break: F x the speed (0 < F < 1, e.g. 0.1)");
+  render_cmd->add_option("--slowmo-window", render.slowmo_window,
+                         "Slow motion within +-W tau of each break (default 2)")
+      ->check(CLI::PositiveNumber);
   add_frame_options(render_cmd, render.frame);
 
   cb::FiguresOptions figures;

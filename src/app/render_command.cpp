@@ -82,7 +82,7 @@ int render_command(const RenderOptions& o) {
     sink = open_sink(o, scene, plan);
   measure_plan(scene, plan);
   if (o.dry_run) {
-    std::printf("%s\n", plan_json(scene, plan, "", {}).c_str());
+    std::printf("%s\n", plan_json(scene, plan, "", plan.extent.breaks).c_str());
     return 0;  // the sink's destructor removes its temporary file
   }
   Canvas canvas = make_canvas(o.frame, plan.frame.width, plan.frame.height);
@@ -94,8 +94,9 @@ int render_command(const RenderOptions& o) {
                                         plan.overlay, plan.style.theme);
   if (!o.quiet) {
     std::fprintf(stderr, "render %s: %lld frames %dx%d at %g fps (%g tau/s, dt %g) -> %s\n",
-                 scene.name.c_str(), static_cast<long long>(plan.frames), plan.frame.width,
-                 plan.frame.height, plan.frame.fps, plan.frame.speed, plan.dt, plan.output.c_str());
+                 scene.name.c_str(), static_cast<long long>(plan.grid.frames()), plan.frame.width,
+                 plan.frame.height, plan.frame.fps, plan.frame.speed, plan.grid.dt(),
+                 plan.output.c_str());
     if (plan.overlay.any() && !plan.overlay_layout.enabled)
       std::fprintf(stderr, "render %s: no overlay below %dx%d (its text would not be readable)\n",
                    scene.name.c_str(), kOverlayMinWidth, kOverlayMinHeight);
@@ -103,9 +104,10 @@ int render_command(const RenderOptions& o) {
 
   BoundedQueue<RenderSnapshot> snapshots(3);
   FrameSource source(scene, plan, o.threads);
-  Producer producer{source, plan.frames, snapshots, {}, {}};
+  Producer producer{source, plan.grid.frames(), snapshots, {}, {}};
   std::thread physics(std::ref(producer));
-  Progress progress("render " + scene.name, static_cast<double>(plan.frames), o.quiet, "frames");
+  Progress progress("render " + scene.name, static_cast<double>(plan.grid.frames()), o.quiet,
+                    "frames");
   std::int64_t done = 0;
   // Video sinks take Y'CbCr converted here, as the pixels are read: less CPU per frame than
   // the encoder's own conversion (output/yuv420.h says why that matters).

@@ -92,12 +92,18 @@ RenderPlan plan_render(const SceneDesc& scene, const RenderOptions& o) {
       throw SceneError("fps " + number_text(p.frame.fps) +
                        ": videos need a whole number of frames per second (e.g. --fps 30)");
   }
-  // Frame k shows tau = k * speed / fps, reached in a whole number of integrator steps: the
-  // step is shrunk (never grown) so that every frame lands exactly on its time.
-  p.tau_per_frame = p.frame.speed / p.frame.fps;
-  p.substeps = std::max<std::int64_t>(
-      1, static_cast<std::int64_t>(std::ceil(p.tau_per_frame / scene.integrator.dt - 1e-9)));
-  p.dt = p.tau_per_frame / static_cast<double>(p.substeps);
+  // Frames every speed / fps of tau (slower around breaks with slow motion), each reached in
+  // a whole number of integrator steps: the step is shrunk (never grown) so that every frame
+  // lands exactly on its time (frame_grid.h).
+  SlowMotion slow{p.frame.slowmo, p.frame.slowmo_window};
+  if (o.slowmo >= 0) slow.factor = o.slowmo;
+  if (o.slowmo_window > 0) slow.window = o.slowmo_window;
+  if (!(slow.factor > 0.0 && slow.factor <= 1.0))
+    throw SceneError("--slowmo " + number_text(slow.factor) +
+                     ": expected a factor between 0 and 1, e.g. --slowmo 0.1 (a tenth of the speed)");
+  p.frame.slowmo = slow.factor;
+  p.frame.slowmo_window = slow.window;
+  p.grid = FrameGrid(p.frame.speed / p.frame.fps, scene.integrator.dt, slow);
   p.overlay = overlay_switches(p.frame, o);
   p.overlay_layout = overlay_layout(p.frame.width, p.frame.height, p.overlay);
   p.scene_hash = scene_hash(scene, o.overrides);
@@ -106,17 +112,20 @@ RenderPlan plan_render(const SceneDesc& scene, const RenderOptions& o) {
 
 void measure_plan(const SceneDesc& scene, RenderPlan& p) {
   // With the overlay the pre-pass also samples, at the frame times, the plots' extremes.
-  p.extent =
-      measure_run(scene, scene.integrator.t_end, p.dt, p.overlay_layout.enabled ? p.substeps : 0);
-  p.frames = static_cast<std::int64_t>(std::floor(p.extent.tau_stop / p.tau_per_frame + 1e-9)) + 1;
+  p.extent = measure_run(scene, scene.integrator.t_end, p.grid.dt(),
+                         p.overlay_layout.enabled ? p.grid.substeps() : 0,
+                         p.grid.slow_motion().on());
+  std::vector<double> breaks;
+  for (const BreakEvent& b : p.extent.breaks) breaks.push_back(b.tau);
+  p.grid.lay_out(p.extent.tau_stop, breaks);
   p.style = snapshot_style(scene, p.frame, p.extent);
   if (p.overlay_layout.enabled) {
     p.style.chain_height = p.overlay_layout.chain_height;  // the plots take the rest
     OverlaySetup& s = p.overlay_setup;
     s.title = scene.title;
     s.omega0 = scene.units ? scene.units->omega0() : 0.0;
-    s.tau_per_frame = p.tau_per_frame;
-    s.tau_end = static_cast<double>(p.frames - 1) * p.tau_per_frame;
+    s.tau_per_frame = p.grid.tau_per_frame();
+    s.tau_end = p.grid.tau(p.grid.frames() - 1);
     s.phi_min = p.extent.phi_min;
     s.phi_max = p.extent.phi_max;
     s.energy_max = p.extent.energy_max;
@@ -136,7 +145,7 @@ std::string plan_json(const SceneDesc& scene, const RenderPlan& p, const std::st
        ",\"pull_string\":" + (c.pull_string ? "true" : "false") + "}";
   j += ",\"drive\":" + drive_json(scene.drive);
   j += ",\"integrator\":{\"dt\":" + number_text(scene.integrator.dt) +
-       ",\"dt_used\":" + number_text(p.dt) + ",\"t_end\":" + number_text(scene.integrator.t_end) +
+       ",\"dt_used\":" + number_text(p.grid.dt()) + ",\"t_end\":" + number_text(scene.integrator.t_end) +
        ",\"after_break\":" +
        (scene.integrator.after_break ? number_text(*scene.integrator.after_break)
                                      : std::string("null")) +
@@ -147,19 +156,26 @@ std::string plan_json(const SceneDesc& scene, const RenderPlan& p, const std::st
   j += ",\"view\":" + json_string(p.frame.view);
   j += ",\"overlay\":" +
        json_string(p.overlay_layout.enabled ? overlay_switches_text(p.overlay) : "none");
-  j += ",\"frames\":" + std::to_string(p.frames) + ",\"fps\":" + number_text(p.frame.fps);
-  j += ",\"duration\":" + number_text(static_cast<double>(p.frames) / p.frame.fps);
+  const std::int64_t frames = p.grid.frames();
+  j += ",\"frames\":" + std::to_string(frames) + ",\"fps\":" + number_text(p.frame.fps);
+  j += ",\"duration\":" + number_text(static_cast<double>(frames) / p.frame.fps);
   j += ",\"tau_per_second\":" + number_text(p.frame.speed) +
-       ",\"tau_end\":" + number_text(static_cast<double>(p.frames - 1) * p.tau_per_frame);
+       ",\"tau_end\":" + number_text(p.grid.tau(frames - 1));
+  j += ",\"slowmo\":" +
+       (p.grid.slow_motion().on()
+            ? "{\"factor\":" + number_text(p.grid.slow_motion().factor) +
+                  ",\"window\":" + number_text(p.grid.slow_motion().window) + "}"
+            : std::string("null"));
   if (!gl.empty()) j += ",\"gl\":" + json_string(gl);
   j += ",\"breaks\":[";
   for (std::size_t i = 0; i < breaks.size(); ++i) {
     // The first frame that shows the break.
-    const auto frame = static_cast<std::int64_t>(std::ceil(breaks[i].tau / p.tau_per_frame - 1e-9));
+    const std::int64_t frame = p.grid.first_frame_at_or_after(breaks[i].tau);
     j += (i ? "," : "") + std::string("{\"spring\":") + std::to_string(breaks[i].spring) +
          ",\"tau\":" + number_text(breaks[i].tau) + ",\"frame\":" + std::to_string(frame) + "}";
   }
-  return j + "]}";
+  j += "],\"frame_tau\":" + numbers_json(p.grid.taus());
+  return j + "}";
 }
 
 void write_sidecar(const SceneDesc& scene, const RenderPlan& p, const std::string& gl,

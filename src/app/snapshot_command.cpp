@@ -72,21 +72,25 @@ int overlay_snapshots(const SnapshotOptions& o, const SceneDesc& scene,
   require_writable_dir(o.out_dir);
   measure_plan(scene, plan);
   std::vector<std::int64_t> frames;
+  const FrameGrid& grid = plan.grid;
+  const double last_tau = grid.tau(grid.frames() - 1);
   for (double tau : times) {
-    const double k = tau / plan.tau_per_frame;
-    const auto frame = static_cast<std::int64_t>(std::llround(k));
-    if (std::abs(k - static_cast<double>(frame)) > kFrameSlack)
-      throw SceneError("--at " + o.at + ": with --overlay each tau must be a frame time of the " +
-                       "video, a multiple of speed / fps = " + number(plan.tau_per_frame) +
-                       "; nearest to " + number(tau) + ": " +
-                       number(std::floor(k) * plan.tau_per_frame) + " or " +
-                       number(std::ceil(k) * plan.tau_per_frame) +
-                       " (or change the frame times with --set render.fps=... / render.speed=...)");
-    if (frame >= plan.frames)
+    // The frame clock (frame_grid.h) says which times are frames: within kFrameSlack of a
+    // frame's step, in units of the normal frame step.
+    const std::int64_t frame = grid.frame_at(tau, kFrameSlack * grid.tau_per_frame());
+    if (tau > last_tau + kFrameSlack * grid.tau_per_frame())
       throw SceneError("--at " + o.at + ": tau " + number(tau) +
-                       " is past the video's last frame (tau " +
-                       number(static_cast<double>(plan.frames - 1) * plan.tau_per_frame) +
+                       " is past the video's last frame (tau " + number(last_tau) +
                        "; see integrator.t_end and after_break)");
+    if (frame < 0) {
+      const std::int64_t after = grid.first_frame_at_or_after(tau);
+      throw SceneError("--at " + o.at + ": with --overlay each tau must be a frame time of the " +
+                       "video (every speed / fps = " + number(grid.tau_per_frame()) +
+                       " of tau, closer in slow motion); nearest to " + number(tau) + ": " +
+                       number(grid.tau(std::max<std::int64_t>(0, after - 1))) + " or " +
+                       number(grid.tau(after)) +
+                       " (or change the frame times with --set render.fps=... / render.speed=...)");
+    }
     frames.push_back(frame);
   }
   Canvas canvas = make_canvas(o.frame, plan.frame.width, plan.frame.height);

@@ -218,7 +218,8 @@ void compose_spacetime(const OverlayLayout& layout, const OverlayData& d, ThemeN
   const int rows = d.spacetime_rows(), columns = d.spacetime_columns;
   if (rows == 0 || columns == 0) return;
   // Each pixel shows the cell under its centre: column c spans springs c N / C .. (c+1) N / C,
-  // row r the times within half a row of spacetime_tau[r] (rows are evenly spaced from 0).
+  // row r the times nearer spacetime_tau[r] than its neighbours' (rows are evenly spaced in
+  // frames, which slow motion makes uneven in tau), up to half a normal row past the last.
   std::vector<int> column_of(static_cast<std::size_t>(w));
   for (int x = 0; x < w; ++x) {
     const double springs = m.x0 + (x + 0.5) / w * (m.x1 - m.x0);
@@ -230,8 +231,11 @@ void compose_spacetime(const OverlayLayout& layout, const OverlayData& d, ThemeN
   int cached_row = -1;
   for (int y = 0; y < h; ++y) {  // y = 0 is the area's bottom row (GL order)
     const double tau = m.y0 + (y + 0.5) / h * (m.y1 - m.y0);
-    const long r = std::lround((tau - d.spacetime_tau.front()) / row_tau);
-    if (r < 0 || r >= rows) continue;
+    const auto& t = d.spacetime_tau;
+    if (tau < t.front() - 0.5 * row_tau || tau > t.back() + 0.5 * row_tau) continue;
+    const auto above = std::lower_bound(t.begin(), t.end(), tau);
+    long r = static_cast<long>(above - t.begin());
+    if (r == rows || (r > 0 && tau - t[r - 1] < t[r] - tau)) --r;
     if (r != cached_row) {
       for (int k = 0; k < columns; ++k)
         colours[k] = spacetime_texel(d.spacetime[static_cast<std::size_t>(r) * columns + k], theme);

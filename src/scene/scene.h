@@ -42,6 +42,10 @@ struct RenderDesc {
   // dark (projector; the default for videos: the strain map's tension end is brightest and
   // reads best on black in a dim hall) | light (white, for handouts and papers)
   std::string theme = "dark";
+  // Slow motion around every break: the video runs at slowmo x its speed within
+  // +-slowmo_window tau of each break (1: off).
+  double slowmo = 1.0;
+  double slowmo_window = 2.0;
   bool overlay = true;                // videos: the HUD and plots under the chain (src/overlay)
   // Which parts of the overlay: the HUD; phi_1, phi_N/2, phi_N and energy vs tau; the
   // space-time picture of the strain; the normal-mode bars.

@@ -48,6 +48,12 @@ RenderDesc read_render(const SceneReader& r) {
     r.fail("render", "theme",
            "unknown render.theme '" + d.theme + "'; " +
                suggest(d.theme, {"dark", "light"}, "\"", "\""));
+  d.slowmo = r.number("render", "slowmo").value_or(d.slowmo);
+  if (!(d.slowmo > 0.0 && d.slowmo <= 1.0))
+    r.fail("render", "slowmo",
+           "render.slowmo = " + format_exact(d.slowmo) +
+               " must be in (0, 1]: the fraction of normal speed around a break, e.g. 0.1");
+  d.slowmo_window = read_positive(r, "slowmo_window", d.slowmo_window, "tau either side of a break");
   d.overlay = r.boolean("render", "overlay").value_or(d.overlay);
   d.overlay_hud = r.boolean("render", "overlay_hud").value_or(d.overlay_hud);
   d.overlay_plots = r.boolean("render", "overlay_plots").value_or(d.overlay_plots);

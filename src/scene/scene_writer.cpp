@@ -116,7 +116,9 @@ std::string write_scene(const SceneDesc& scene) {
   const RenderDesc& r = scene.render;
   out << "\n[render]\nwidth = " << r.width << "\nheight = " << r.height
       << "\nfps = " << number(r.fps) << "\nspeed = " << number(r.speed)
-      << "\nview = " << quoted(r.view) << "\ntheme = " << quoted(r.theme) << "\n";
+      << "\nview = " << quoted(r.view) << "\ntheme = " << quoted(r.theme)
+      << "\nslowmo = " << number(r.slowmo) << "\nslowmo_window = " << number(r.slowmo_window)
+      << "\n";
   auto flag = [&](const char* key, bool value) {
     out << key << " = " << (value ? "true" : "false") << "\n";
   };

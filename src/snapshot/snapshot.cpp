@@ -252,6 +252,20 @@ double Frame::break_age(int spring) const {
 
 }  // namespace snapshot_detail
 
+void add_slow_motion_tag(RenderSnapshot& snap, double speed, ThemeName theme) {
+  const SnapshotLayout& l = snap.layout;
+  const Palette pal = palette(theme);
+  char factor[32];
+  std::snprintf(factor, sizeof factor, "%.2g", speed);
+  const std::string text = "\u00D7" + std::string(factor) + " slow motion";
+  const float w = text_width(text, l.font_px);
+  const float x = static_cast<float>(snap.width) - l.margin - w;
+  Layer& marks = snap.layers[kLayerMarks];
+  marks.labels.push_back(Label{text, x, l.margin, l.font_px, pal.text});
+  const float y = l.margin + 1.5f * l.text_size;
+  marks.rects.push_back(Rect{x, y, w, std::max(2.0f, 0.2f * l.text_size), to_color(cb::theme(theme).accent)});
+}
+
 RenderSnapshot build_snapshot(const ChainState& state, const ChainParams& params, double force,
                               const SnapshotStyle& style) {
   assert(state.psi.size() == static_cast<std::size_t>(params.beads) && "state does not match N");

@@ -163,6 +163,10 @@ Color strain_color(double s);  // the dark theme's
 // The layout build_snapshot uses for this style and chain.
 SnapshotLayout snapshot_layout(const SnapshotStyle& style, const ChainParams& params);
 
+// Marks a frame of a slowed-down video: "×0.1 slow motion" at the top right, in the theme's
+// text colour over an accent underline (speed: this frame's speed relative to normal).
+void add_slow_motion_tag(RenderSnapshot& snapshot, double speed, ThemeName theme);
+
 // Builds the frame for the chain in `state` (bead j's psi in state.psi[j-1]) under force f.
 RenderSnapshot build_snapshot(const ChainState& state, const ChainParams& params, double force,
                               const SnapshotStyle& style);

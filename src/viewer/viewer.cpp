@@ -71,7 +71,7 @@ struct Viewer {
     model.script = fixed_step;
     model.speed = session.scene().render.speed;
     model.playing = o.play || o.benchmark_frames > 0;
-    pacer.reset(Window::now(), 0, model.speed, p.tau_per_frame);
+    pacer.reset(Window::now(), 0, model.speed, p.grid.tau_per_frame());
   }
 
   // From tau = 0, with the draft's chain and drive when `apply_draft`: checked by the scene
@@ -132,7 +132,7 @@ struct Viewer {
     }
     if (r.view_changed) session.set_view(draft.render.view);
     if (r.speed_changed)
-      pacer.reset(Window::now(), session.frame(), model.speed, session.plan().tau_per_frame);
+      pacer.reset(Window::now(), session.frame(), model.speed, session.plan().grid.tau_per_frame());
     if (r.step > 0) {
       model.playing = false;
       session.advance(r.step);
@@ -149,7 +149,7 @@ struct Viewer {
   void advance_physics() {
     const RenderPlan& p = session.plan();
     if (!model.playing || session.at_end()) {
-      pacer.reset(Window::now(), session.frame(), model.speed, p.tau_per_frame);
+      pacer.reset(Window::now(), session.frame(), model.speed, p.grid.tau_per_frame());
       model.behind = false;
       return;
     }
@@ -159,7 +159,7 @@ struct Viewer {
       // need not be a whole number of grid frames: the fraction is carried to the next
       // displayed frame, so the tau per frame is right on average (a slower speed moves the
       // chain every few displayed frames).
-      grid_carry += model.speed / p.frame.fps / p.tau_per_frame;
+      grid_carry += model.speed / p.frame.fps / p.grid.tau_per_frame();
       const auto frames = static_cast<std::int64_t>(std::floor(grid_carry + 1e-9));
       grid_carry -= static_cast<double>(frames);
       if (frames > 0) session.advance(frames);
