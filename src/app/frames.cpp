@@ -1,4 +1,5 @@
 #include "app/frames.h"
+#include "app/zoom.h"
 
 #include <algorithm>
 #include <cmath>
@@ -56,6 +57,9 @@ RenderDesc frame_settings(const SceneDesc& scene, const FrameOptions& o) {
     if (!parse_theme(o.theme)) throw SceneError("--theme " + o.theme + ": expected dark or light");
     d.theme = o.theme;
   }
+  if (!o.zoom.empty()) d.zoom = o.zoom;
+  if (!o.caption.empty()) d.caption = o.caption;
+  parse_zoom(d.zoom, scene.chain.beads, o.zoom.empty() ? "render.zoom =" : "--zoom");
   return d;
 }
 
@@ -123,6 +127,12 @@ SnapshotStyle snapshot_style(const SceneDesc& scene, const RenderDesc& frame,
   s.height = frame.height;
   parse_view(frame.view, s.view);
   s.theme = parse_theme(frame.theme).value_or(ThemeName::Dark);
+  s.caption = frame.caption;
+  const ZoomSpec zoom = parse_zoom(frame.zoom, scene.chain.beads, "--zoom");
+  if (zoom.mode == ZoomSpec::Mode::Fixed) {
+    s.zoom_first = zoom.first;
+    s.zoom_last = zoom.last;
+  }
   s.psi_range = extent.psi_range;
   s.force_range = extent.force_range;
   s.threshold = scene.chain.breakable() ? scene.chain.threshold : 0.0;

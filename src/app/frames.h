@@ -21,6 +21,8 @@ struct FrameOptions {
   std::string quality;  // l | m | h | k or empty
   std::string view;     // longitudinal | transverse | both or empty
   std::string theme;    // dark | light or empty
+  std::string zoom;     // app/zoom.h or empty
+  std::string caption;  // a line under the chain or empty
   std::string gl;       // auto | osmesa | egl or empty (CHAINBREAK_GL)
 };
 

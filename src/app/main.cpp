@@ -84,6 +84,10 @@ int main(int argc, char** argv) {
     cmd->add_option("--theme", f.theme,
                     "dark (projector; default) or light (white: handouts, papers)")
         ->check(CLI::IsMember({"dark", "light"}));
+    cmd->add_option("--zoom", f.zoom,
+                    "Springs to draw across the panel: J0:J1, auto[:W] (follow the most strained "
+                    "W springs) or break[:W] (centre on the first break)");
+    cmd->add_option("--caption", f.caption, "A line of text under the chain");
     cmd->add_option("--gl", f.gl,
                     "OpenGL backend: auto, osmesa or egl (default: $CHAINBREAK_GL or auto)");
   };

@@ -8,6 +8,7 @@
 #include "app/commands.h"
 #include "app/frame_source.h"
 #include "app/frames.h"
+#include "app/zoom.h"
 #include "app/render_plan.h"
 #include "output/frame_writer.h"
 #include "output/png_writer.h"
@@ -157,7 +158,13 @@ int snapshot_command(const SnapshotOptions& o) {
       std::fprintf(stderr, "chainbreak: %s\n", sim.error().c_str());
       return 1;
     }
-    const RenderSnapshot snap = build_snapshot(sim.state(), scene.chain, sim.force_now(), style);
+    // auto / break zoom: a single picture has no camera history, so it settles at once.
+    SnapshotStyle at_tau = style;
+    ZoomCamera camera(parse_zoom(frame.zoom, scene.chain.beads, "--zoom"), scene.chain.beads,
+                      extent.breaks.empty() ? 0 : extent.breaks.front().spring,
+                      extent.breaks.empty() ? -1.0 : extent.breaks.front().tau);
+    camera.frame(sim.state(), at_tau.zoom_first, at_tau.zoom_last, true);
+    const RenderSnapshot snap = build_snapshot(sim.state(), scene.chain, sim.force_now(), at_tau);
     const std::string path =
         (std::filesystem::path(o.out_dir) / snapshot_name(scene.name, tau)).string();
     write_png(path, canvas.renderer->render(snap));

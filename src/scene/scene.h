@@ -46,6 +46,11 @@ struct RenderDesc {
   // +-slowmo_window tau of each break (1: off).
   double slowmo = 1.0;
   double slowmo_window = 2.0;
+  // Zoom: "" (the whole chain), "J0:J1" (springs), "auto[:W]" or "break[:W]" (app/zoom.h).
+  std::string zoom;
+  // A line of text under the chain, and seconds of title card opening the video (0: none).
+  std::string caption;
+  double title_card = 0.0;
   bool overlay = true;                // videos: the HUD and plots under the chain (src/overlay)
   // Which parts of the overlay: the HUD; phi_1, phi_N/2, phi_N and energy vs tau; the
   // space-time picture of the strain; the normal-mode bars.

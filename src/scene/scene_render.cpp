@@ -54,6 +54,13 @@ RenderDesc read_render(const SceneReader& r) {
            "render.slowmo = " + format_exact(d.slowmo) +
                " must be in (0, 1]: the fraction of normal speed around a break, e.g. 0.1");
   d.slowmo_window = read_positive(r, "slowmo_window", d.slowmo_window, "tau either side of a break");
+  d.zoom = r.string("render", "zoom").value_or(d.zoom);  // checked against N by the app
+  d.caption = r.string("render", "caption").value_or(d.caption);
+  d.title_card = r.number("render", "title_card").value_or(d.title_card);
+  if (!(d.title_card >= 0.0 && d.title_card <= 60.0))
+    r.fail("render", "title_card",
+           "render.title_card = " + format_exact(d.title_card) +
+               " must be 0 to 60 seconds, e.g. title_card = 3");
   d.overlay = r.boolean("render", "overlay").value_or(d.overlay);
   d.overlay_hud = r.boolean("render", "overlay_hud").value_or(d.overlay_hud);
   d.overlay_plots = r.boolean("render", "overlay_plots").value_or(d.overlay_plots);

@@ -118,7 +118,8 @@ std::string write_scene(const SceneDesc& scene) {
       << "\nfps = " << number(r.fps) << "\nspeed = " << number(r.speed)
       << "\nview = " << quoted(r.view) << "\ntheme = " << quoted(r.theme)
       << "\nslowmo = " << number(r.slowmo) << "\nslowmo_window = " << number(r.slowmo_window)
-      << "\n";
+      << "\nzoom = " << quoted(r.zoom) << "\ncaption = " << quoted(r.caption)
+      << "\ntitle_card = " << number(r.title_card) << "\n";
   auto flag = [&](const char* key, bool value) {
     out << key << " = " << (value ? "true" : "false") << "\n";
   };

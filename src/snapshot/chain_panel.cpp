@@ -167,10 +167,10 @@ struct Columns {
 // reduced in registers and merged into the column once: updating the column in memory for
 // each would chain every iteration to the previous one's store.
 template <bool kTransverse>
-void fold_springs(const Frame& frame, const PanelLayout& p, Columns& cols) {
+void fold_springs(const Frame& frame, const PanelLayout& p, double origin, Columns& cols) {
   const int n = frame.params.beads, width = frame.style.width;
   const double* psi = frame.state.psi.data();
-  const double x_wall = frame.layout.x_wall, spacing = p.spacing;
+  const double x_wall = origin, spacing = p.spacing;
   const double centre = p.centre_y, psi_scale = p.psi_scale;
   const std::vector<int>& broken = frame.state.broken;
   std::size_t next = 0;
@@ -235,7 +235,7 @@ void fold_springs(const Frame& frame, const PanelLayout& p, Columns& cols) {
 // Folds every intact spring into the pixel columns it covers, keeping the most strained
 // one per column; emits one Rect per run of columns with equal colour (and, in the
 // transverse view, equal vertical extent).
-void draw_ribbon(Frame& frame, const PanelLayout& p) {
+void draw_ribbon(Frame& frame, const PanelLayout& p, double origin) {
   const int W = frame.style.width;
   const bool transverse = p.view == View::Transverse;
   const std::size_t w = static_cast<std::size_t>(W);
@@ -245,9 +245,9 @@ void draw_ribbon(Frame& frame, const PanelLayout& p) {
   if (transverse) {
     cols.y_lo.assign(w, std::numeric_limits<double>::infinity());
     cols.y_hi.assign(w, -std::numeric_limits<double>::infinity());
-    fold_springs<true>(frame, p, cols);
+    fold_springs<true>(frame, p, origin, cols);
   } else {
-    fold_springs<false>(frame, p, cols);
+    fold_springs<false>(frame, p, origin, cols);
   }
 
   Layer& chain = frame.layer(kLayerChain);
@@ -464,16 +464,22 @@ void draw_force(Frame& frame, const PanelLayout& p, const Placer& at) {
 }  // namespace
 
 void draw_chain_panel(Frame& frame, const PanelLayout& p) {
-  const Placer at{frame.state.psi, frame.layout.x_wall, p.spacing,
-                  p.psi_scale,     p.centre_y,          p.view == View::Transverse};
+  // Where bead 0 at rest would be: the wall's face, or left of it by the beads a zoom skips
+  // (longitudinal: and by the first drawn bead's displacement, so the stretch stays in view).
+  const SnapshotLayout& l = frame.layout;
+  const bool transverse = p.view == View::Transverse;
+  const int first = l.first_bead;
+  const double shift = first > 0 && !transverse ? frame.state.psi[first - 1] : 0.0;
+  const double origin = l.x_wall - (first + shift) * p.spacing;
+  const Placer at{frame.state.psi, origin, p.spacing, p.psi_scale, p.centre_y, transverse};
   if (frame.out.ribbon) {
-    draw_ribbon(frame, p);
+    draw_ribbon(frame, p, origin);
   } else {
     draw_beads_and_springs(frame, p, at);
     draw_broken_halves(frame, p, at);
   }
   draw_breaks(frame, p, at);
-  draw_force(frame, p, at);
+  if (l.last_bead == frame.params.beads) draw_force(frame, p, at);
 }
 
 }  // namespace cb::snapshot_detail

@@ -52,6 +52,14 @@ constexpr double kRibbonSpacing = 3.0;  // below this many pixels per bead: the 
 // `two_panels`: the first text row holds the panel's caption, so the chain keeps off it.
 PanelLayout panel_layout(View view, double top, double bottom, bool two_panels,
                          const SnapshotLayout& l, const SnapshotStyle& style, int beads) {
+  // A zoomed panel spans its stretch of springs; a longitudinal one moves with the stretch's
+  // first bead, so it needs room for the stretch's own extension only.
+  const double full_range = style.psi_range;
+  double psi_range = full_range;
+  if (l.zoomed()) {
+    beads = l.last_bead - l.first_bead;
+    psi_range = std::min(full_range, beads * std::max(style.threshold, style.strain_range));
+  }
   PanelLayout p;
   p.view = view;
   p.top = static_cast<float>(top);
@@ -62,7 +70,7 @@ PanelLayout panel_layout(View view, double top, double bottom, bool two_panels,
   const double usable = l.x_right - l.x_wall;
   // Longitudinal: bead N lands on x_right when psi_N = psi_range, the largest extension.
   const double spacing =
-      view == View::Longitudinal ? usable / (beads + style.psi_range) : usable / beads;
+      view == View::Longitudinal ? usable / (beads + psi_range) : usable / beads;
   // A chain that stretches a lot would get tiny beads at rest; size them for the geometric
   // mean of the rest and the fully stretched spacing (still below half the rest spacing).
   const double typical = std::min(std::sqrt(spacing * usable / beads), 1.6 * spacing);
@@ -166,6 +174,22 @@ void add_legend(Layer& layer, const SnapshotLayout& l, const SnapshotStyle& styl
   layer.labels.push_back(Label{right, l.legend_x + l.legend_w + 0.6f * ts, mid_y, l.font_px, pal.text});
 }
 
+// Zoom: a thin bar standing for the whole chain (wall at its left), the drawn stretch marked
+// on it in the accent colour, and which springs those are.
+void add_overview(Layer& layer, const SnapshotLayout& l, int beads, const Palette& pal) {
+  layer.rects.push_back(Rect{l.overview_x, l.overview_y, l.overview_w, l.overview_h, pal.rest_line});
+  const float x0 = l.overview_x + l.overview_w * static_cast<float>(l.first_bead) / beads;
+  const float x1 = l.overview_x + l.overview_w * static_cast<float>(l.last_bead) / beads;
+  const float w = std::max(2.0f, x1 - x0);
+  layer.rects.push_back(Rect{std::min(x0, l.overview_x + l.overview_w - w), l.overview_y - 1.0f, w,
+                             l.overview_h + 2.0f, pal.marker});
+  char text[96];
+  std::snprintf(text, sizeof text, "springs %d\u2013%d of %d", l.first_bead + 1, l.last_bead, beads);
+  const float tw = text_width(text, l.font_px);
+  layer.labels.push_back(Label{text, std::round(0.5f * (l.overview_x + l.overview_w - tw + l.overview_x)),
+                               l.margin, l.font_px, pal.dim_text});
+}
+
 }  // namespace
 
 SnapshotLayout snapshot_layout(const SnapshotStyle& style, const ChainParams& params) {
@@ -183,6 +207,13 @@ SnapshotLayout snapshot_layout(const SnapshotStyle& style, const ChainParams& pa
       style.chain_height > 0 ? std::min(frame_h, static_cast<double>(style.chain_height)) : frame_h;
   l.text_size = static_cast<float>(ts);
   l.font_px = static_cast<float>(font_px);
+  l.first_bead = 0;
+  l.last_bead = params.beads;
+  if (style.zoom_first > 0 && style.zoom_last > style.zoom_first) {
+    l.first_bead = std::min(style.zoom_first - 1, params.beads - 1);
+    l.last_bead = std::clamp(style.zoom_last, l.first_bead + 1, params.beads);
+    l.last_bead_limited = l.last_bead < params.beads;
+  }
   l.margin = static_cast<float>(margin);
   l.x_wall = static_cast<float>(margin + std::max(10.0, std::round(0.02 * W)));
   l.arrow_max = static_cast<float>(std::clamp(std::round(0.08 * W), 30.0, 160.0));
@@ -198,7 +229,17 @@ SnapshotLayout snapshot_layout(const SnapshotStyle& style, const ChainParams& pa
   l.legend_x = static_cast<float>(std::round(0.5 * (W - l.legend_w)));
 
   const double top = margin + 2.2 * ts;  // below the time label
-  const double bottom = std::max(top + 1.0, l.legend_y - 1.4 * ts);
+  if (l.zoomed()) {  // the overview bar: the whole chain, under the time label's row
+    l.overview_x = l.x_wall;
+    l.overview_w = l.x_right - l.x_wall;
+    l.overview_h = static_cast<float>(std::max(3.0, std::round(0.35 * ts)));
+    l.overview_y = static_cast<float>(std::round(margin + 1.55 * ts));
+  }
+  double bottom = std::max(top + 1.0, l.legend_y - 1.4 * ts);
+  if (!style.caption.empty()) {  // a row for the caption between the chain and the colour bar
+    l.caption_y = static_cast<float>(std::round(l.legend_y - 2.6 * ts));
+    bottom = std::max(top + 1.0, l.caption_y - 1.2 * ts);
+  }
   if (style.view == View::Both) {
     const double gap = ts;
     const double h = std::max(1.0, 0.5 * (bottom - top - gap));
@@ -297,7 +338,7 @@ RenderSnapshot build_snapshot(const ChainState& state, const ChainParams& params
   Layer& back = frame.layer(kLayerFrame);
   for (int i = 0; i < l.panel_count; ++i) {
     const PanelLayout& p = l.panels[i];
-    add_wall(back, l, p, pal);
+    if (l.first_bead == 0) add_wall(back, l, p, pal);
     if (p.view == View::Transverse) {  // the rest line psi = 0, a reference for the eye
       back.segments.push_back(
           Segment{l.x_wall, p.centre_y, l.x_right, p.centre_y, 1.0f, pal.rest_line});
@@ -309,6 +350,12 @@ RenderSnapshot build_snapshot(const ChainState& state, const ChainParams& params
     }
   }
   add_legend(back, l, style, pal);
+  if (l.zoomed()) add_overview(back, l, params.beads, pal);
+  if (!style.caption.empty()) {
+    const float w = text_width(style.caption, l.font_px);
+    back.labels.push_back(Label{style.caption, std::round(0.5f * (style.width - w)), l.caption_y,
+                                l.font_px, pal.text});
+  }
   frame.layer(kLayerMarks)
       .labels.push_back(
           Label{minus(format("τ = %.2f", state.tau)), l.margin, l.margin, l.font_px, pal.text});

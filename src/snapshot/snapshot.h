@@ -116,6 +116,13 @@ struct SnapshotLayout {
   int panel_count = 0;
   PanelLayout panels[2];
   float legend_x = 0, legend_y = 0, legend_w = 0, legend_h = 0;  // the colour bar
+  // The beads the panels span: first_bead at the wall's face (0: the wall itself), last_bead
+  // at the right end (N unless zoomed).
+  int first_bead = 0, last_bead = 0;
+  bool zoomed() const { return first_bead > 0 || last_bead_limited; }
+  bool last_bead_limited = false;
+  float overview_x = 0, overview_y = 0, overview_w = 0, overview_h = 0;  // zoom: the whole chain
+  float caption_y = 0;  // top of the caption's capitals (when there is one)
 };
 
 struct RenderSnapshot {
@@ -151,6 +158,11 @@ struct SnapshotStyle {
   // frame, leaving the rest to the overlay's plots; 0 (or the frame's height): the whole frame.
   // Text size and margins still follow the whole frame, so they match the overlay's.
   int chain_height = 0;
+  // Zoom: springs zoom_first..zoom_last (1-based, first < last) drawn across the panel, with an
+  // overview bar of the whole chain marking where they sit; 0, 0: the whole chain. In the
+  // longitudinal view the window moves with bead zoom_first - 1, so the stretch stays in view.
+  int zoom_first = 0, zoom_last = 0;
+  std::string caption;  // a line of text centred under the chain (above the colour bar)
 };
 
 // The strain colour map: s = phi / phi_c in [-1, 1] (clamped). Diverging (compression blue,
