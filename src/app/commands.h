@@ -39,7 +39,8 @@ struct SweepOptions {
 int sweep_command(const SweepOptions& options);
 
 struct SnapshotOptions {
-  std::string scene;
+  std::string scene;                // the first (or only) scene
+  std::vector<std::string> scenes;  // 1-4 scenes: 2-4 are stacked in one picture
   std::vector<Override> overrides;
   std::string at;  // "T1,T2,..."
   std::string out_dir = "renders";
@@ -52,7 +53,8 @@ struct SnapshotOptions {
 int snapshot_command(const SnapshotOptions& options);
 
 struct RenderOptions {
-  std::string scene;
+  std::string scene;                // the first (or only) scene
+  std::vector<std::string> scenes;  // 1-4 scenes: 2-4 are rendered side by side
   std::vector<Override> overrides;
   std::string output;      // video file; empty: renders/<scene>.mp4
   std::string frames_dir;  // PNG sequence here instead of a video
@@ -68,6 +70,7 @@ struct RenderOptions {
   std::string overlay;      // --overlay hud,plots,spacetime,modes; empty: the scene's [render]
   double slowmo = -1;        // --slowmo F; < 0: the scene's [render] slowmo
   double slowmo_window = 0;  // --slowmo-window W; 0: the scene's
+  double title_card = -1;    // --title-card S (seconds); < 0: the scene's
 };
 int render_command(const RenderOptions& options);
 

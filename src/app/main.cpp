@@ -94,7 +94,10 @@ int main(int argc, char** argv) {
 
   cb::SnapshotOptions snap;
   auto* snap_cmd = app.add_subcommand("snapshot", "PNG frames of a scene at exact times");
-  snap_cmd->add_option("scene", snap.scene, "Scene file (scenes/*.toml)")->required();
+  snap_cmd
+      ->add_option("scene", snap.scenes, "Scene file (scenes/*.toml); 2-4 scenes are stacked")
+      ->required()
+      ->expected(1, 4);
   snap_cmd->add_option("--at", snap.at, "Times tau, comma-separated, e.g. --at 0,30,60.5")
       ->required();
   snap_cmd->add_option("-o,--out", snap.out_dir, "Folder for the PNGs (default renders)");
@@ -107,7 +110,11 @@ int main(int argc, char** argv) {
   cb::RenderOptions render;
   auto* render_cmd =
       app.add_subcommand("render", "The whole run as a video (MP4, WebM, GIF) or PNG frames");
-  render_cmd->add_option("scene", render.scene, "Scene file (scenes/*.toml)")->required();
+  render_cmd
+      ->add_option("scene", render.scenes,
+                   "Scene file (scenes/*.toml); 2-4 scenes render side by side on one clock")
+      ->required()
+      ->expected(1, 4);
   render_cmd->add_option(
       "-o,--output", render.output,
       "Video file: .mp4 (H.264), .webm (VP9) or .gif (default renders/<scene>.mp4)");
@@ -136,6 +143,9 @@ int main(int argc, char** argv) {
       ->excludes(no_overlay);
   render_cmd->add_option("--slowmo", render.slowmo,
                          "Slow motion around every break: F x the speed (0 < F < 1, e.g. 0.1)");
+  render_cmd->add_option("--title-card", render.title_card,
+                         "Open the video with S seconds of title, parameters and the question")
+      ->check(CLI::Range(0.0, 60.0));
   render_cmd->add_option("--slowmo-window", render.slowmo_window,
                          "Slow motion within +-W tau of each break (default 2)")
       ->check(CLI::PositiveNumber);
@@ -175,10 +185,12 @@ int main(int argc, char** argv) {
     }
     if (snap_cmd->parsed()) {
       snap.overrides = overrides;
+      snap.scene = snap.scenes.front();
       return cb::snapshot_command(snap);
     }
     if (render_cmd->parsed()) {
       render.overrides = overrides;
+      render.scene = render.scenes.front();
       return cb::render_command(render);
     }
     if (figures_cmd->parsed()) return cb::figures_command(figures);

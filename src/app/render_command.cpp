@@ -18,6 +18,7 @@
 #include "app/frames.h"
 #include "app/progress.h"
 #include "app/render_plan.h"
+#include "app/run_set.h"
 #include "output/frame_writer.h"
 #include "output/output_file.h"
 #include "output/video_encoder.h"
@@ -30,22 +31,20 @@ namespace {
 // The physics side of the pipeline, on its own thread: each frame's snapshot into the queue.
 // Stops early on interruption or a non-finite state.
 struct Producer {
-  FrameSource& source;
+  RunSet& runs;
   std::int64_t frames;
   BoundedQueue<RenderSnapshot>& queue;
   std::string error;
-  std::vector<BreakEvent> breaks;
 
   void operator()() {
     for (std::int64_t k = 0; k < frames && !g_interrupted; ++k) {
-      std::optional<RenderSnapshot> snap = source.frame(k);
+      std::optional<RenderSnapshot> snap = runs.frame(k);
       if (!snap) {
-        error = source.error();
+        error = runs.error();
         break;
       }
       if (!queue.push(std::move(*snap))) break;
     }
-    breaks = source.state().breaks;
     queue.close();
   }
 };
@@ -65,8 +64,13 @@ std::unique_ptr<FrameSink> open_sink(const RenderOptions& o, const SceneDesc& sc
 }  // namespace
 
 int render_command(const RenderOptions& o) {
-  const SceneDesc scene = load_scene(o.scene, o.overrides);
-  RenderPlan plan = plan_render(scene, o);
+  std::vector<SceneDesc> scenes;
+  // The same --set applies to every scene of a side-by-side video.
+  for (const std::string& path : o.scenes.empty() ? std::vector<std::string>{o.scene} : o.scenes)
+    scenes.push_back(load_scene(path, o.overrides));
+  RunSet runs(scenes, o);
+  const SceneDesc& scene = runs.scene(0);
+  const RenderPlan& plan = runs.plan();
   // The default folder is made on demand; a dry run only checks it could be.
   const bool default_folder = o.output.empty() && o.frames_dir.empty();
   if (default_folder && !std::filesystem::exists("renders")) {
@@ -80,9 +84,9 @@ int render_command(const RenderOptions& o) {
   std::unique_ptr<FrameSink> sink;
   if (!(o.dry_run && default_folder && !std::filesystem::exists("renders")))
     sink = open_sink(o, scene, plan);
-  measure_plan(scene, plan);
+  runs.measure();
   if (o.dry_run) {
-    std::printf("%s\n", plan_json(scene, plan, "", plan.extent.breaks).c_str());
+    std::printf("%s\n", runs.json("").c_str());
     return 0;  // the sink's destructor removes its temporary file
   }
   Canvas canvas = make_canvas(o.frame, plan.frame.width, plan.frame.height);
@@ -94,7 +98,7 @@ int render_command(const RenderOptions& o) {
                                         plan.overlay, plan.style.theme);
   if (!o.quiet) {
     std::fprintf(stderr, "render %s: %lld frames %dx%d at %g fps (%g tau/s, dt %g) -> %s\n",
-                 scene.name.c_str(), static_cast<long long>(plan.grid.frames()), plan.frame.width,
+                 scene.name.c_str(), static_cast<long long>(runs.frames()), plan.frame.width,
                  plan.frame.height, plan.frame.fps, plan.frame.speed, plan.grid.dt(),
                  plan.output.c_str());
     if (plan.overlay.any() && !plan.overlay_layout.enabled)
@@ -103,10 +107,10 @@ int render_command(const RenderOptions& o) {
   }
 
   BoundedQueue<RenderSnapshot> snapshots(3);
-  FrameSource source(scene, plan, o.threads);
-  Producer producer{source, plan.grid.frames(), snapshots, {}, {}};
+  runs.start(o.threads);
+  Producer producer{runs, runs.frames(), snapshots, {}};
   std::thread physics(std::ref(producer));
-  Progress progress("render " + scene.name, static_cast<double>(plan.grid.frames()), o.quiet,
+  Progress progress("render " + scene.name, static_cast<double>(runs.frames()), o.quiet,
                     "frames");
   std::int64_t done = 0;
   // Video sinks take Y'CbCr converted here, as the pixels are read: less CPU per frame than
@@ -156,7 +160,9 @@ int render_command(const RenderOptions& o) {
     return 130;
   }
   sink->finish();
-  write_sidecar(scene, plan, gl, producer.breaks);
+  OutputFile sidecar(sidecar_path(scene, plan));
+  sidecar.write(runs.json(gl) + "\n");
+  sidecar.commit();
   if (!o.quiet)
     std::fprintf(stderr, "render %s: wrote %s\n", scene.name.c_str(), plan.output.c_str());
   std::printf("%s\n", plan.output.c_str());

@@ -104,6 +104,7 @@ RenderPlan plan_render(const SceneDesc& scene, const RenderOptions& o) {
   p.frame.slowmo = slow.factor;
   p.frame.slowmo_window = slow.window;
   p.grid = FrameGrid(p.frame.speed / p.frame.fps, scene.integrator.dt, slow);
+  if (o.title_card >= 0) p.frame.title_card = o.title_card;
   p.overlay = overlay_switches(p.frame, o);
   p.overlay_layout = overlay_layout(p.frame.width, p.frame.height, p.overlay);
   p.scene_hash = scene_hash(scene, o.overrides);
@@ -156,35 +157,43 @@ std::string plan_json(const SceneDesc& scene, const RenderPlan& p, const std::st
   j += ",\"view\":" + json_string(p.frame.view);
   j += ",\"overlay\":" +
        json_string(p.overlay_layout.enabled ? overlay_switches_text(p.overlay) : "none");
-  const std::int64_t frames = p.grid.frames();
+  const std::int64_t frames = p.title_frames + p.grid.frames();
   j += ",\"frames\":" + std::to_string(frames) + ",\"fps\":" + number_text(p.frame.fps);
   j += ",\"duration\":" + number_text(static_cast<double>(frames) / p.frame.fps);
+  j += ",\"title_card_frames\":" + std::to_string(p.title_frames);
   j += ",\"tau_per_second\":" + number_text(p.frame.speed) +
-       ",\"tau_end\":" + number_text(p.grid.tau(frames - 1));
+       ",\"tau_end\":" + number_text(p.grid.tau(p.grid.frames() - 1));
   j += ",\"slowmo\":" +
        (p.grid.slow_motion().on()
             ? "{\"factor\":" + number_text(p.grid.slow_motion().factor) +
                   ",\"window\":" + number_text(p.grid.slow_motion().window) + "}"
             : std::string("null"));
   if (!gl.empty()) j += ",\"gl\":" + json_string(gl);
-  j += ",\"breaks\":[";
-  for (std::size_t i = 0; i < breaks.size(); ++i) {
-    // The first frame that shows the break.
-    const std::int64_t frame = p.grid.first_frame_at_or_after(breaks[i].tau);
-    j += (i ? "," : "") + std::string("{\"spring\":") + std::to_string(breaks[i].spring) +
-         ",\"tau\":" + number_text(breaks[i].tau) + ",\"frame\":" + std::to_string(frame) + "}";
-  }
-  j += "],\"frame_tau\":" + numbers_json(p.grid.taus());
+  j += ",\"breaks\":" + breaks_json(p, breaks);
+  // Every video frame's tau: the title card's frames show the chain at rest (tau 0).
+  std::vector<double> taus(static_cast<std::size_t>(p.title_frames), 0.0);
+  const std::vector<double> grid = p.grid.taus();
+  taus.insert(taus.end(), grid.begin(), grid.end());
+  j += ",\"frame_tau\":" + numbers_json(taus);
   return j + "}";
 }
 
-void write_sidecar(const SceneDesc& scene, const RenderPlan& p, const std::string& gl,
-                   const std::vector<BreakEvent>& breaks) {
-  const fs::path path = p.codec == "png" ? fs::path(p.output) / (scene.name + ".json")
-                                         : fs::path(p.output).replace_extension(".json");
-  OutputFile out(path.string());
-  out.write(plan_json(scene, p, gl, breaks) + "\n");
-  out.commit();
+std::string breaks_json(const RenderPlan& p, const std::vector<BreakEvent>& breaks) {
+  std::string j = "[";
+  for (std::size_t i = 0; i < breaks.size(); ++i) {
+    // The first frame that shows the break.
+    const std::int64_t frame = p.title_frames + p.grid.first_frame_at_or_after(breaks[i].tau);
+    j += (i ? "," : "") + std::string("{\"spring\":") + std::to_string(breaks[i].spring) +
+         ",\"tau\":" + number_text(breaks[i].tau) + ",\"frame\":" + std::to_string(frame) + "}";
+  }
+  return j + "]";
 }
+
+std::string sidecar_path(const SceneDesc& scene, const RenderPlan& p) {
+  return (p.codec == "png" ? fs::path(p.output) / (scene.name + ".json")
+                           : fs::path(p.output).replace_extension(".json"))
+      .string();
+}
+
 
 }  // namespace cb

@@ -19,6 +19,7 @@ struct RenderPlan {
   // The frame clock: frame k shows the chain at the integrator's step grid.step(k), with the
   // step dt = grid.dt() (never above the scene's). Laid out by measure_plan.
   FrameGrid grid;
+  std::int64_t title_frames = 0;  // title card frames before the grid's first (--title-card)
   RunExtent extent;  // what keeps the chain in the frame; where the run stops
   SnapshotStyle style;
   // The overlay: the parts asked for (scene [render], then --overlay / --no-overlay), where
@@ -41,8 +42,9 @@ void measure_plan(const SceneDesc& scene, RenderPlan& plan);
 // The JSON sidecar: scene, parameters after overrides, frames, timing, codec, GL, breaks.
 std::string plan_json(const SceneDesc& scene, const RenderPlan& plan, const std::string& gl,
                       const std::vector<BreakEvent>& breaks);
-// Writes plan_json next to the output: "<video stem>.json" or "<folder>/<scene>.json".
-void write_sidecar(const SceneDesc& scene, const RenderPlan& plan, const std::string& gl,
-                   const std::vector<BreakEvent>& breaks);
+// The breaks as the sidecar lists them: spring, tau and the first video frame that shows it.
+std::string breaks_json(const RenderPlan& plan, const std::vector<BreakEvent>& breaks);
+// The sidecar's path for a plan: "<video stem>.json" or "<folder>/<scene>.json".
+std::string sidecar_path(const SceneDesc& scene, const RenderPlan& plan);
 
 }  // namespace cb
