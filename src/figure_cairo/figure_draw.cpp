@@ -293,7 +293,7 @@ struct PanelPainter {
       if (label[0] == '-') label = "\u2212" + label.substr(1);
       draw_text(cr, small(), b.right() + 0.3 * m.font, b.y + 0.5 * (1.0 - v) * b.h, label);
     }
-    draw_text(cr, small(), b.x + 0.5 * b.w, b.y - 0.9 * m.small, h.label, 0.5);
+    draw_text(cr, small(), b.x + 0.5 * b.w, b.y - 1.4 * m.small, h.label, 0.5);
   }
 
   struct Entry {
@@ -347,6 +347,7 @@ struct PanelPainter {
     switch (s.style) {
       case SeriesStyle::Points:
         source(cr, colour);
+        cairo_new_path(cr);
         cairo_arc(cr, x + 0.5 * w, y, m.point, 0, 2 * kPi);
         cairo_fill(cr);
         break;
@@ -380,6 +381,13 @@ struct PanelPainter {
     heatmap();
     for (const Series& s : p.series) series(s);
     for (const Note& n : p.notes) {
+      if (!p.heatmap.empty()) {  // on a field of any colour: on a patch of the background
+        source(cr, theme.background, 0.8);
+        const double pad = 0.3 * m.small;
+        cairo_rectangle(cr, px(n.x) - pad, py(n.y) - 0.5 * m.small - pad,
+                        text_advance(cr, small(), n.text) + 2 * pad, m.small + 2 * pad);
+        cairo_fill(cr);
+      }
       source(cr, readable_on(theme, rgb(n.colour)));
       draw_text(cr, small(), px(n.x), py(n.y), n.text);
     }

@@ -53,7 +53,7 @@ FigurePanelLayout panel_layout(const Panel& p, const FigureBox& region, const Fi
   l.y_label_x = l.box.x + pad + 0.5 * fs;
   if (!p.heatmap.empty()) {
     // The bar's label sits above it, inside the area's height.
-    const double label = 1.5 * m.small;
+    const double label = 2.2 * m.small;
     l.colour_bar = {a.right() + 1.0 * fs, a.y + label, 1.0 * fs, a.h - label};
   }
   return l;
