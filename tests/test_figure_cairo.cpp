@@ -5,6 +5,7 @@
 // command as a user runs it.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -40,6 +41,28 @@ cb::FigurePanelLayout panel_layout(const cb::Figure& f, std::size_t panel) {
 // [i, i + 1) x [j, j + 1)).
 std::pair<int, int> pixel_of(const cb::FigureMapping& m, double x, double y) {
   return {static_cast<int>(std::floor(m.px(x))), static_cast<int>(std::floor(m.py(y)))};
+}
+
+// Where a disc of colour `c` drawn over `under` sits: the centroid of its coverage in the
+// (2r+1)^2 pixels around (x, y), each pixel's coverage read off its blend of the two colours
+// in the channel where they differ most; pixel (i, j) has its centre at (i + 0.5, j + 0.5).
+std::pair<double, double> coverage_centroid(const cb::Image& image, int x, int y, int r, cb::Rgb8 c,
+                                            cb::Rgb8 under) {
+  const int dr = c.r - under.r, dg = c.g - under.g, db = c.b - under.b;
+  const int channel = std::abs(dr) >= std::abs(dg) && std::abs(dr) >= std::abs(db) ? 0
+                      : std::abs(dg) >= std::abs(db)                               ? 1
+                                                                                   : 2;
+  const double from = channel == 0 ? under.r : channel == 1 ? under.g : under.b;
+  const double span = channel == 0 ? dr : channel == 1 ? dg : db;
+  double sum = 0, sx = 0, sy = 0;
+  for (int j = y - r; j <= y + r; ++j)
+    for (int i = x - r; i <= x + r; ++i) {
+      const double a = std::clamp((image.pixel(i, j)[channel] - from) / span, 0.0, 1.0);
+      sum += a;
+      sx += a * (i + 0.5);
+      sy += a * (j + 0.5);
+    }
+  return {sx / sum, sy / sum};
 }
 
 // The strongest contrast any pixel of the box has against `background`: a text's darkest
@@ -97,12 +120,12 @@ TEST_CASE("Figures: points and lines land on the pixels their data give", "[figu
                                         cb::linspace(0, 100, 201), {}));
   for (double x : main.series[0].x) main.series[0].y.push_back(x / 2.0);
   main.series.push_back(cb::make_series("dots", cb::SeriesStyle::Points, cb::FigureColour::Series2,
-                                        {20.0, 70.0}, {45.0, 5.0}));
+                                        {23.0, 71.0}, {43.0, 7.0}));
   cb::Panel inset;
   inset.x = cb::axis("\u03B2", 0.01, 10.0, true);
   inset.y = cb::axis("", 0.0, 1.0);
   inset.series.push_back(
-      cb::make_series("dot", cb::SeriesStyle::Points, cb::FigureColour::Series1, {0.3}, {0.5}));
+      cb::make_series("dot", cb::SeriesStyle::Points, cb::FigureColour::Series1, {0.3}, {0.45}));
   inset.inset = true;
   inset.left = 0.6f;
   inset.top = 0.05f;
@@ -117,12 +140,16 @@ TEST_CASE("Figures: points and lines land on the pixels their data give", "[figu
 
   const cb::FigureMapping m = panel_layout(f, 0).mapping;
   // A point's disc (radius 4.2 px) is opaque at its centre: exactly its colour; 12 px above,
-  // not.
-  for (auto [x, y] : {std::pair{20.0, 45.0}, {70.0, 5.0}}) {
+  // not. The centroid of its coverage (antialiased edges included) is where the axes map the
+  // data, to a fifth of a pixel.
+  for (auto [x, y] : {std::pair{23.0, 43.0}, {71.0, 7.0}}) {
     const auto [px, py] = pixel_of(m, x, y);
     INFO("point (" << x << ", " << y << ") at pixel (" << px << ", " << py << ")");
     CHECK(channel_distance(image, px, py, dots) == 0);
     CHECK(channel_distance(image, px, py - 12, dots) > 60);
+    const auto [cx, cy] = coverage_centroid(image, px, py, 7, dots, theme.panel);
+    CHECK(cx == Approx(m.px(x)).margin(0.2));
+    CHECK(cy == Approx(m.py(y)).margin(0.2));
   }
   // The line (2 px wide) passes through its pixel: within a row of the mapped y, a pixel of
   // its colour (antialiased edges are lighter); 6 px above and below, not.
@@ -141,8 +168,12 @@ TEST_CASE("Figures: points and lines land on the pixels their data give", "[figu
   const double expected_x = l.area.x + (std::log10(0.3) + 2.0) / 3.0 * l.area.w;
   CHECK(l.px(cb::axis_value(f.panels[1].x, 0.3)) == Approx(expected_x).epsilon(1e-12));
   const int px = static_cast<int>(std::floor(expected_x));
-  const int py = static_cast<int>(std::floor(l.py(0.5)));
-  CHECK(channel_distance(image, px, py, cb::figure_rgb(cb::FigureColour::Series1, theme)) == 0);
+  const int py = static_cast<int>(std::floor(l.py(0.45)));
+  const cb::Rgb8 dot = cb::figure_rgb(cb::FigureColour::Series1, theme);
+  CHECK(channel_distance(image, px, py, dot) == 0);
+  const auto [cx, cy] = coverage_centroid(image, px, py, 6, dot, theme.panel);
+  CHECK(cx == Approx(expected_x).margin(0.2));
+  CHECK(cy == Approx(l.py(0.45)).margin(0.2));
 }
 
 TEST_CASE("Figures: a real figure's curve, Fig. 4(b)'s kinetic energy", "[figures]") {
@@ -260,14 +291,19 @@ TEST_CASE("figures command: PNG, SVG, PDF and CSV per figure, checked by xmllint
   // fill:rgb(R%,G%,B%), the channels in percent. The expected count is the CSV's rows of it.
   const std::string svg = cb::test::slurp(dir.file("out/fig4a.svg"));
   const cb::Rgb8 c = cb::figure_rgb(cb::FigureColour::Series2, light());
-  const std::regex fill(R"(<path[^>]*fill:rgb\(([0-9.]+)%,([0-9.]+)%,([0-9.]+)%\);fill-opacity:1)");
   int filled = 0;
-  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), fill); it != std::sregex_iterator();
-       ++it) {
-    const auto near = [&](int i, std::uint8_t v) {
-      return std::abs(std::stod((*it)[i].str()) * 2.55 - v) < 0.5;
+  for (std::size_t at = svg.find("<path"); at != std::string::npos;
+       at = svg.find("<path", at + 1)) {
+    const std::string element = svg.substr(at, svg.find('>', at) - at);
+    const std::size_t style = element.find("fill:rgb(");
+    double r = -1, g = -1, b = -1;
+    if (style == std::string::npos || element.find("fill-opacity:1") == std::string::npos ||
+        std::sscanf(element.c_str() + style, "fill:rgb(%lf%%,%lf%%,%lf%%)", &r, &g, &b) != 3)
+      continue;
+    const auto near = [](double percent, std::uint8_t v) {
+      return std::abs(percent * 2.55 - v) < 0.5;
     };
-    filled += near(1, c.r) && near(2, c.g) && near(3, c.b);
+    filled += near(r, c.r) && near(g, c.g) && near(b, c.b);
   }
   std::istringstream rows(cb::test::slurp(dir.file("out/fig4a.csv")));
   int points = 0;
