@@ -357,3 +357,27 @@ TEST_CASE("figures command: themes, a subset of formats, clear errors", "[figure
   CHECK(file_parent.status == 2);
   CHECK(file_parent.err.find("-o") != std::string::npos);
 }
+
+TEST_CASE("Figures: tick labels and the --format list", "[figures][ticks]") {
+  // Round numbers: step 20 over [0, 150] (nice_ticks' 1-2-5 rule), labels without decimals.
+  const cb::Ticks t = cb::axis_ticks(cb::axis("\u03C4", 0.0, 150.0), 8);
+  CHECK(t.values == std::vector<double>{0, 20, 40, 60, 80, 100, 120, 140});
+  CHECK(t.labels.front() == "0");
+  CHECK(t.labels.back() == "140");
+  // Negative values get a true minus sign (U+2212), decimals follow the step.
+  const cb::Ticks n = cb::axis_ticks(cb::axis("", -1.0, 1.0), 4);
+  CHECK(n.labels == std::vector<std::string>{"\u22121.0", "\u22120.5", "0.0", "0.5", "1.0"});
+  // A log axis from 0.01 to 10: 1, 2, 5 times each power of ten, at log10 of the value.
+  const cb::Ticks l = cb::axis_ticks(cb::axis("", 0.01, 10.0, true), 8);
+  CHECK(l.labels ==
+        std::vector<std::string>{"0.01", "0.02", "0.05", "0.1", "0.2", "0.5", "1", "2", "5", "10"});
+  CHECK(l.values[3] == Approx(-1.0).margin(1e-12));
+
+  using F = cb::FigureFormat;
+  CHECK(cb::parse_figure_formats("png") == std::vector<F>{F::Png});
+  CHECK(cb::parse_figure_formats("pdf,png,svg") == std::vector<F>{F::Pdf, F::Png, F::Svg});
+  CHECK(!cb::parse_figure_formats(""));
+  CHECK(!cb::parse_figure_formats("png,png"));
+  CHECK(!cb::parse_figure_formats("png,"));
+  CHECK(!cb::parse_figure_formats("PNG"));
+}

@@ -13,6 +13,7 @@
 #include "output/frame_writer.h"
 #include "output/output_file.h"
 #include "output/png_writer.h"
+#include "theme/fonts.h"
 
 namespace cb {
 
@@ -72,6 +73,8 @@ int figures_command(const FiguresOptions& o) {
                      ": expected png, svg, pdf or a comma-separated list of them without "
                      "repeats, e.g. --format png,svg,pdf");
   const Theme& theme = cb::theme(*theme_id);
+  // The typeface first: a machine without it fails at once, not after the computing.
+  for (FontFace face : {FontFace::Sans, FontFace::Bold}) font_path(face);
   make_output_dir(o.out_dir);
   FigureOptions options;
   options.jobs = o.jobs;
