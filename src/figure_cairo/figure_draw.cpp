@@ -34,10 +34,12 @@ double crisp(double v) {
 }
 
 // The chain's strain colour map as 8-bit BGRA (cairo's ARGB32 in memory on little-endian).
-// TODO(theme): use the theme-aware strain_color(s, theme) once the lead lands it in
-// snapshot/colormap.cpp; today's strain_color(s) is the dark theme's map, which the light
-// theme keeps readable (its zero-strain grey is L* 61, far from white).
-std::uint32_t strain_argb(double s) {
+// TODO(theme): main now has strain_color(double s, ThemeName theme) (snapshot/snapshot.h);
+// when this branch is merged, call strain_color(s, theme.name) here so the light figures use
+// the light theme's lightness range. Until then: the dark theme's map, which stays readable
+// on white (its zero-strain grey is L* 61).
+std::uint32_t strain_argb(double s, const Theme& theme) {
+  (void)theme;
   const Color c = strain_color(std::clamp(s, -1.0, 1.0));
   const auto byte = [](float v) {
     return static_cast<std::uint32_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
@@ -47,7 +49,7 @@ std::uint32_t strain_argb(double s) {
 
 // An image of strain colours, `columns` x `rows`, row 0 at the top; value(column, row) / scale.
 template <typename Value>
-CairoSurface strain_image(int columns, int rows, Value value) {
+CairoSurface strain_image(const Theme& theme, int columns, int rows, Value value) {
   CairoSurface image(cairo_image_surface_create(CAIRO_FORMAT_RGB24, columns, rows));
   cairo_surface_flush(image.get());
   unsigned char* data = cairo_image_surface_get_data(image.get());
@@ -55,7 +57,7 @@ CairoSurface strain_image(int columns, int rows, Value value) {
   if (!data) throw std::runtime_error("cairo could not make a heatmap image");
   for (int r = 0; r < rows; ++r) {
     auto* row = reinterpret_cast<std::uint32_t*>(data + static_cast<std::ptrdiff_t>(r) * stride);
-    for (int c = 0; c < columns; ++c) row[c] = strain_argb(value(c, r));
+    for (int c = 0; c < columns; ++c) row[c] = strain_argb(value(c, r), theme);
   }
   cairo_surface_mark_dirty(image.get());
   return image;
@@ -142,7 +144,7 @@ struct PanelPainter {
   void heatmap() const {
     const Heatmap& h = p.heatmap;
     if (h.empty()) return;
-    const CairoSurface image = strain_image(h.columns, h.rows, [&](int c, int r) {
+    const CairoSurface image = strain_image(theme, h.columns, h.rows, [&](int c, int r) {
       // Image row 0 is the top, the heatmap's row 0 the bottom (y_lo).
       return h.values[static_cast<std::size_t>(h.rows - 1 - r) * h.columns + c] / h.scale;
     });
@@ -279,7 +281,7 @@ struct PanelPainter {
     const FigureBox& b = l.colour_bar;
     constexpr int kSteps = 256;  // value / scale from +1 (top) to -1 (bottom)
     const CairoSurface image =
-        strain_image(1, kSteps, [](int, int r) { return 1.0 - 2.0 * (r + 0.5) / kSteps; });
+        strain_image(theme, 1, kSteps, [](int, int r) { return 1.0 - 2.0 * (r + 0.5) / kSteps; });
     paint_image(cr, image.get(), b);
     source(cr, theme.axis);
     cairo_set_line_width(cr, 1.0);
