@@ -292,6 +292,7 @@ TEST_CASE("figures command: PNG, SVG, PDF and CSV per figure, checked by xmllint
   const std::string svg = cb::test::slurp(dir.file("out/fig4a.svg"));
   const cb::Rgb8 c = cb::figure_rgb(cb::FigureColour::Series2, light());
   int filled = 0;
+  double first_x = -1, first_y = -1;  // where the first of them starts
   for (std::size_t at = svg.find("<path"); at != std::string::npos;
        at = svg.find("<path", at + 1)) {
     const std::string element = svg.substr(at, svg.find('>', at) - at);
@@ -303,7 +304,13 @@ TEST_CASE("figures command: PNG, SVG, PDF and CSV per figure, checked by xmllint
     const auto near = [](double percent, std::uint8_t v) {
       return std::abs(percent * 2.55 - v) < 0.5;
     };
-    filled += near(r, c.r) && near(g, c.g) && near(b, c.b);
+    const bool ours = near(r, c.r) && near(g, c.g) && near(b, c.b);
+    if (ours && filled == 0) {
+      const std::size_t d = element.find(" d=\"M ");
+      REQUIRE(d != std::string::npos);
+      REQUIRE(std::sscanf(element.c_str() + d, " d=\"M %lf %lf", &first_x, &first_y) == 2);
+    }
+    filled += ours;
   }
   std::istringstream rows(cb::test::slurp(dir.file("out/fig4a.csv")));
   int points = 0;
@@ -311,6 +318,14 @@ TEST_CASE("figures command: PNG, SVG, PDF and CSV per figure, checked by xmllint
     points += row.rfind("0,\"\u03C6\u2083\u2080 RK4\",points,", 0) == 0;
   REQUIRE(points > 50);
   CHECK(filled == points + 1);
+  // The same layout as the PNG: the first point's disc starts (cairo_arc from angle 0) at its
+  // mapped centre plus the radius, in SVG user units that are the PNG's pixels.
+  const cb::Figure& fig4a = built_figure("fig4a");
+  const cb::Series& rk4 = cb::test::series_of(fig4a, "\u03C6\u2083\u2080 RK4");
+  const cb::FigureMapping m = panel_layout(fig4a, 0).mapping;
+  CHECK(first_x ==
+        Approx(m.px(rk4.x[0]) + cb::figure_metrics(cb::kFigureHeight).point).margin(1e-3));
+  CHECK(first_y == Approx(m.py(rk4.y[0])).margin(1e-3));
 
   // The CSV holds the plotted numbers: fig4a's phi_30 RK4 row at tau = 150 is the exact
   // solution's phi_30 there, to RK4's accuracy.
