@@ -79,7 +79,8 @@ struct FiguresOptions {
   std::string only;  // comma-separated figure names; empty: all
   int jobs = 0;      // threads for the RK4 maps; 0: all cores
   bool quiet = false;
-  FrameOptions frame;  // only .gl is used: the figures have a fixed size
+  std::string theme = "light";  // light (paper, the default) or dark (projector)
+  std::string formats = "png";  // png,svg,pdf: any subset
 };
 int figures_command(const FiguresOptions& options);
 

@@ -152,15 +152,17 @@ int main(int argc, char** argv) {
   add_frame_options(render_cmd, render.frame);
 
   cb::FiguresOptions figures;
-  auto* figures_cmd = app.add_subcommand(
-      "figures", "The paper's Figs. 3-5 and two breaking maps as PNG + CSV (numbers behind them)");
+  auto* figures_cmd = app.add_subcommand("figures",
+                                         "The paper's Figs. 3-5 and two breaking maps as PNG, SVG "
+                                         "and/or PDF + CSV (numbers behind them)");
   figures_cmd->add_option("-o,--out", figures.out_dir, "Folder (default renders/figures)");
   figures_cmd->add_option("--only", figures.only, "Comma-separated names, e.g. fig4a,breaking_map");
   figures_cmd
       ->add_option("--jobs,-j", figures.jobs, "Threads for the RK4 maps (default: all cores)")
       ->check(CLI::NonNegativeNumber);
-  figures_cmd->add_option("--gl", figures.frame.gl, "OpenGL backend: auto, osmesa or egl")
-      ->check(CLI::IsMember({"auto", "osmesa", "egl"}));
+  figures_cmd->add_option("--theme", figures.theme, "light (default, paper style) or dark");
+  figures_cmd->add_option("--format", figures.formats,
+                          "Formats, any of png,svg,pdf comma-separated (default png)");
   figures_cmd->add_flag("--quiet,-q", figures.quiet, "No progress output");
 
   // `view`: the rest of the line goes to the viewer executable, --help included.

@@ -50,7 +50,7 @@ inline constexpr double kOneBodyBetaLo = 0.01, kOneBodyBetaHi = 10.0;
 // Shared by the builders (figure.cpp).
 std::vector<double> linspace(double lo, double hi, int count);
 std::vector<double> logspace(double lo, double hi, int count);
-Series make_series(std::string label, SeriesStyle style, FigureRgb colour, std::vector<double> x,
+Series make_series(std::string label, SeriesStyle style, FigureColour colour, std::vector<double> x,
                    std::vector<double> y);
 // value with `decimals` decimals (labels and notes).
 std::string fixed(double value, int decimals);

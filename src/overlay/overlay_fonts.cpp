@@ -1,4 +1,4 @@
-// The overlay's fonts and the RK4 points' marker, shared by the Overlay and the FigureDrawer:
+// The overlay's fonts and the RK4 points' marker, shared by the Overlay:
 // one way to set up Dear ImGui headless. Internal to cb_overlay.
 #include <imgui.h>
 

@@ -122,18 +122,6 @@ float text_sub(Canvas& c, ImFont* font, float x, float y, const OverlayRgb& colo
   return x;
 }
 
-Ticks nice_ticks(double lo, double hi, int count) {
-  Ticks t;
-  const double raw = (hi - lo) / std::max(1, count);
-  if (!(raw > 0) || !std::isfinite(raw)) return t;
-  const double mag = std::pow(10.0, std::floor(std::log10(raw)));
-  const double norm = raw / mag;
-  t.step = (norm <= 1.0 ? 1.0 : norm <= 2.0 ? 2.0 : norm <= 5.0 ? 5.0 : 10.0) * mag;
-  for (double v = std::ceil(lo / t.step) * t.step; v <= hi + 1e-9 * t.step; v += t.step)
-    t.values.push_back(std::abs(v) < 1e-9 * t.step ? 0.0 : v);
-  return t;
-}
-
 void dashed_hline(Canvas& c, float x0, float x1, float y, ImU32 colour, float width, float dash) {
   for (float x = x0; x < x1; x += 2.0f * dash)
     c.draw->AddLine(ImVec2(x, y), ImVec2(std::min(x + dash, x1), y), colour, width);

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "figures/axis_ticks.h"
 #include "overlay/overlay_panels.h"
 
 namespace cb::overlay_detail {
@@ -20,13 +21,9 @@ float text(Canvas& c, ImFont* font, float x, float y, const OverlayRgb& colour,
 float text_sub(Canvas& c, ImFont* font, float x, float y, const OverlayRgb& colour,
                const std::string& s, float align = 0.0f, float scale = 1.0f);
 
-// Ticks at 1, 2 or 5 times a power of ten, at most about `count` of them in [lo, hi].
-struct Ticks {
-  std::vector<double> values;
-  double step = 1.0;
-  std::vector<std::string> labels;  // one per value; empty: the values, formatted
-};
-Ticks nice_ticks(double lo, double hi, int count);
+// Ticks and nice_ticks live with the figures (figures/axis_ticks.h): one rule for both.
+using cb::nice_ticks;
+using cb::Ticks;
 
 void dashed_hline(Canvas& c, float x0, float x1, float y, ImU32 colour, float width, float dash);
 void dashed_vline(Canvas& c, float x, float y0, float y1, ImU32 colour, float width, float dash);
