@@ -32,7 +32,13 @@ Grid sweep_grid(const SweepOptions& o) {
     try {
       load_scene(o.scene, overrides);
     } catch (const SceneError& e) {
-      throw SceneError(std::string(e.what()) + "\n(from " + axis.spec + ")");
+      // The scene names the override "--set KEY=VALUE"; name the option the user typed.
+      std::string what = e.what();
+      const std::string set = "--set " + axis.key + "=";
+      const auto colon = what.find(": ");
+      if (what.rfind(set, 0) == 0 && colon != std::string::npos)
+        what = axis.spec + what.substr(colon);
+      throw SceneError(what);
     }
   }
   return grid;

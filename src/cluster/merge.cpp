@@ -127,7 +127,7 @@ std::string merged_csv(const std::vector<ShardFile>& shards) {
 }
 
 std::string merged_json(const std::vector<ShardFile>& shards, const std::string& version) {
-  using nlohmann::json;
+  using json = nlohmann::ordered_json;
   const auto& r = shards.front().record;
   json j = json::parse(record_json(r));
   for (const char* k : {"shard", "first_point", "end_point", "wall_seconds", "peak_memory_kib",

@@ -5,7 +5,7 @@
 
 namespace cb {
 
-using nlohmann::json;
+using json = nlohmann::ordered_json;
 
 namespace {
 
