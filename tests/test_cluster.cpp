@@ -136,8 +136,9 @@ TEST_CASE("Coverage finds missing and duplicated points", "[cluster]") {
   };
   const Coverage full = check_coverage({shard(1, 3), shard(2, 3), shard(3, 3)});
   CHECK(full.complete());
-  CHECK(merged_csv({shard(3, 3), shard(1, 3), shard(2, 3)}) ==
-        "value,spring,tau\n1,1,2\n2,1,2\n3,1,2\n4,1,2\n5,1,2\n6,1,2\n7,1,2\n8,1,2\n9,1,2\n10,1,2\n");
+  CHECK(
+      merged_csv({shard(3, 3), shard(1, 3), shard(2, 3)}) ==
+      "value,spring,tau\n1,1,2\n2,1,2\n3,1,2\n4,1,2\n5,1,2\n6,1,2\n7,1,2\n8,1,2\n9,1,2\n10,1,2\n");
   const Coverage gap = check_coverage({shard(1, 3), shard(3, 3)});  // shard 2: points 3..5
   CHECK(gap.missing == std::vector<std::size_t>{3, 4, 5});
   CHECK(index_ranges(gap.missing) == "3-5");
@@ -163,7 +164,8 @@ TEST_CASE("Slurm's answers are read and the array spec is written as sbatch want
   CHECK(throttle_from_array_arg("--array=0-3%2", "0-3") == 2);
   CHECK(throttle_from_array_arg("--array=%3", "0-3") == 3);
   CHECK(throttle_from_array_arg("--partition=x", "0-3") == 0);
-  CHECK_THROWS_WITH(throttle_from_array_arg("--array=0-9", "0-3"), Catch::Contains("--max-running"));
+  CHECK_THROWS_WITH(throttle_from_array_arg("--array=0-9", "0-3"),
+                    Catch::Contains("--max-running"));
   CHECK(shell_command({"a", "b c", "it's"}) == "a 'b c' 'it'\\''s'");
 }
 

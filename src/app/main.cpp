@@ -93,8 +93,9 @@ int main(int argc, char** argv) {
   sweep_cmd->add_option("--sbatch-arg", sweep.sbatch_args,
                         "With --submit: an sbatch option for the script, e.g. "
                         "--sbatch-arg=--partition=short (repeatable)");
-  sweep_cmd->add_option("--max-running", sweep.max_running,
-                        "With --submit: at most K array tasks at once (the array's %K)")
+  sweep_cmd
+      ->add_option("--max-running", sweep.max_running,
+                   "With --submit: at most K array tasks at once (the array's %K)")
       ->check(CLI::PositiveNumber);
 
   cb::MergeOptions merge;

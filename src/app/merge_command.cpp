@@ -31,9 +31,10 @@ std::string recompute_hint(const ShardRecord& record, const std::vector<std::siz
   }
   const fs::path script = fs::path(merged_csv).replace_extension(".sbatch");
   if (fs::exists(script))
-    hint += "or on Slurm (the array of just those shards):\n  sbatch --array=" +
-            array_spec(shards, 0) + " " + shell_quote(fs::absolute(script).string()) +
-            "\n(rerunning the same `chainbreak sweep ... --submit slurm` does this too)\n";
+    hint +=
+        "or on Slurm (the array of just those shards):\n  sbatch --array=" + array_spec(shards, 0) +
+        " " + shell_quote(fs::absolute(script).string()) +
+        "\n(rerunning the same `chainbreak sweep ... --submit slurm` does this too)\n";
   return hint + "then merge again.\n";
 }
 
@@ -81,8 +82,9 @@ int merge_command(const MergeOptions& o) {
     if (fs::is_directory(in)) {
       const auto found = shard_csvs_in(in);
       if (found.empty())
-        throw MergeError(in + ": no shard CSVs with their .json records in this folder; "
-                              "name the shard files or the folder `sweep --submit` wrote");
+        throw MergeError(in +
+                         ": no shard CSVs with their .json records in this folder; "
+                         "name the shard files or the folder `sweep --submit` wrote");
       files.insert(files.end(), found.begin(), found.end());
     } else {
       files.push_back(in);

@@ -74,9 +74,16 @@ long peak_memory_kib() {
 int sweep_command(const SweepOptions& o) {
   if (o.solver != "rk4" && o.solver != "exact")
     throw SceneError("--solver " + o.solver + ": sweep supports rk4 or exact");
+  if (record_path(o.csv) == o.csv)
+    throw SceneError("--csv " + o.csv + ": the sweep's record goes to " + o.csv +
+                     " (the CSV's name with .json); name the CSV .csv");
   const auto start = std::chrono::steady_clock::now();
   const Grid grid = sweep_grid(o);
   if (!o.submit.empty()) return submit_sweep(o, grid);
+  if (o.tasks > 0 || o.wait || !o.sbatch_args.empty() || o.max_running > 0)
+    throw GridError(
+        "--tasks, --wait, --sbatch-arg and --max-running go with --submit slurm; "
+        "add --submit slurm, or drop them for a sweep on this machine");
   const Shard shard = sweep_shard(o.shard);
   const PointRange range = shard_points(grid.size(), shard);
   // Validate the scene and every value before any work: a bad value fails now, not at row 300.

@@ -17,8 +17,9 @@ Grid sweep_grid(const SweepOptions& o) {
     add_axis(grid, list ? parse_values(text) : parse_vary(text));
   }
   if (grid.axes.empty())
-    throw GridError("sweep: nothing to vary; give --vary KEY=LO:HI:COUNT[:log] or --values "
-                    "KEY=V1,V2,... (several make a grid)");
+    throw GridError(
+        "sweep: nothing to vary; give --vary KEY=LO:HI:COUNT[:log] or --values "
+        "KEY=V1,V2,... (several make a grid)");
   check_grid_size(grid, std::size_t{1} << 40);
   // Each key must be a number the scene takes: try its first value on the scene now, so an
   // unknown key names the option that brought it, not "--set".
@@ -70,7 +71,8 @@ ShardRecord sweep_record(const SweepOptions& o, const Grid& grid) {
   r.header = grid.csv_header();
   r.grid = grid;
   r.command = {"sweep", fs::absolute(o.scene).string()};
-  for (const auto& s : o.overrides) r.command.insert(r.command.end(), {"--set", s.key + "=" + s.value});
+  for (const auto& s : o.overrides)
+    r.command.insert(r.command.end(), {"--set", s.key + "=" + s.value});
   for (const auto& a : grid.axes) {
     const auto space = a.spec.find(' ');
     r.command.push_back(a.spec.substr(0, space));

@@ -33,17 +33,18 @@ bool shard_complete(const std::string& csv, const ShardRecord& expected, Shard s
   }
 }
 
-// The array tasks of `job_id` still in the queue, by state ("PENDING", "RUNNING", ...).
-// Empty once the whole array has left the queue.
-std::vector<std::string> queued_states(const std::string& job_id) {
-  const auto r = run_process({"squeue", "--noheader", "--array", "--jobs", job_id,
-                              "--format", "%T"});
-  std::vector<std::string> states;
-  if (r.status != 0) return states;  // an unknown job id: finished and purged
+// The array tasks of `job_id` still in the queue, by state ("PENDING", "RUNNING", ...):
+// empty once the whole array has left the queue. False when squeue failed for another reason
+// than an unknown (finished and purged) job, e.g. a controller too busy to answer: ask again.
+bool queued_states(const std::string& job_id, std::vector<std::string>& states) {
+  const auto r =
+      run_process({"squeue", "--noheader", "--array", "--jobs", job_id, "--format", "%T"});
+  states.clear();
+  if (r.status != 0) return r.err.find("Invalid job id") != std::string::npos;
   std::size_t start = 0;
   for (std::size_t end; (end = r.out.find('\n', start)) != std::string::npos; start = end + 1)
     if (end > start) states.push_back(r.out.substr(start, end - start));
-  return states;
+  return true;
 }
 
 std::size_t count_of(const std::vector<std::string>& v, const std::string& what) {
@@ -57,11 +58,13 @@ int submit_sweep(const SweepOptions& o, const Grid& grid) {
     throw GridError("--submit " + o.submit + ": the only scheduler is slurm (--submit slurm)");
   const std::size_t n = grid.size();
   if (o.tasks < 1 || static_cast<std::size_t>(o.tasks) > n)
-    throw GridError("--tasks " + std::to_string(o.tasks) + ": --submit slurm needs --tasks S with " +
-                    "1 <= S <= " + std::to_string(n) + " (the grid's points), e.g. --tasks " +
+    throw GridError("--tasks " + std::to_string(o.tasks) +
+                    ": --submit slurm needs --tasks S with " + "1 <= S <= " + std::to_string(n) +
+                    " (the grid's points), e.g. --tasks " +
                     std::to_string(std::min<std::size_t>(n, 8)));
   if (o.shard != "1/1")
-    throw GridError("--shard " + o.shard + " with --submit: the array chooses each task's shard; "
+    throw GridError("--shard " + o.shard +
+                    " with --submit: the array chooses each task's shard; "
                     "drop --shard");
   const auto S = static_cast<std::size_t>(o.tasks);
   if (!on_path("sbatch"))
@@ -69,11 +72,13 @@ int submit_sweep(const SweepOptions& o, const Grid& grid) {
         "--submit slurm: sbatch is not on PATH, so this machine cannot submit to Slurm. Run it "
         "on a Slurm login node (or install Slurm's client, Debian package slurm-client, with "
         "SLURM_CONF pointing at the cluster's slurm.conf), or run the shards without Slurm: "
-        "chainbreak sweep ... --shard I/" + std::to_string(S) +
-        " for I = 1.." + std::to_string(S) + " (e.g. with GNU parallel), then chainbreak merge");
+        "chainbreak sweep ... --shard I/" +
+        std::to_string(S) + " for I = 1.." + std::to_string(S) +
+        " (e.g. with GNU parallel), then chainbreak merge");
   if (o.wait && !on_path("squeue"))
-    throw GridError("--wait: squeue is not on PATH, so the array cannot be followed; submit "
-                    "without --wait and run chainbreak merge when the job is done");
+    throw GridError(
+        "--wait: squeue is not on PATH, so the array cannot be followed; submit "
+        "without --wait and run chainbreak merge when the job is done");
 
   std::vector<std::size_t> all;
   for (std::size_t i = 1; i <= S; ++i) all.push_back(i);
@@ -130,7 +135,8 @@ int submit_sweep(const SweepOptions& o, const Grid& grid) {
   job.sweep = {chainbreak_exe()};
   job.sweep.insert(job.sweep.end(), expected.command.begin(), expected.command.end());
   job.shards_dir = dir.string();
-  job.merge_command = shell_command({chainbreak_exe(), "merge", "--csv", csv.string(), dir.string()});
+  job.merge_command =
+      shell_command({chainbreak_exe(), "merge", "--csv", csv.string(), dir.string()});
   job.sbatch_args = sbatch_lines;
   job.max_running = throttle;
   OutputFile script_file(script.string());
@@ -154,7 +160,9 @@ int submit_sweep(const SweepOptions& o, const Grid& grid) {
               array_spec(todo, throttle).c_str(),
               todo.size() < S ? ", the others are complete" : "");
   std::printf("shards: %s%s\n", shard_csvs[todo.front() - 1].c_str(),
-              todo.size() > 1 ? (" ... " + fs::path(shard_csvs[todo.back() - 1]).filename().string()).c_str() : "");
+              todo.size() > 1
+                  ? (" ... " + fs::path(shard_csvs[todo.back() - 1]).filename().string()).c_str()
+                  : "");
   std::printf("script: %s\nmerge:  %s\n", script.c_str(), job.merge_command.c_str());
   std::fflush(stdout);
   if (!o.wait) return 0;
@@ -171,7 +179,8 @@ int submit_sweep(const SweepOptions& o, const Grid& grid) {
                    job_id.c_str(), job_id.c_str(), job.merge_command.c_str());
       return 130;
     }
-    const auto states = queued_states(job_id);
+    std::vector<std::string> states;
+    const bool answered = queued_states(job_id, states);
     std::size_t done = 0;
     for (const auto& f : shard_csvs) done += fs::exists(record_path(f)) ? 1 : 0;
     char line[160];
@@ -184,7 +193,7 @@ int submit_sweep(const SweepOptions& o, const Grid& grid) {
       std::fprintf(stderr, "%s (%.0f s)\n", line, t);
       last_line = line;
     }
-    if (states.empty()) break;
+    if (answered && states.empty()) break;
     // Quick polls while a short array finishes, then every 10 s to spare the controller.
     std::this_thread::sleep_for(std::chrono::milliseconds(polls < 60 ? 500 : 10000));
   }

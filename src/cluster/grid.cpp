@@ -96,13 +96,15 @@ GridAxis parse_vary(const std::string& text) {
 
 GridAxis parse_values(const std::string& text) {
   const std::string spec = "--values " + text;
-  const std::string usage = spec + ": expected KEY=V1,V2,..., e.g. --values drive.beta=0.01,0.02,0.05";
+  const std::string usage =
+      spec + ": expected KEY=V1,V2,..., e.g. --values drive.beta=0.01,0.02,0.05";
   const auto [key, rest] = split_key(text, usage);
   GridAxis axis{key, {}, spec};
   for (const auto part : split(rest, ',')) {
     double v = 0;
     if (!parse_double(part, v))
-      throw GridError(spec + ": '" + std::string(part) + "' is not a number; " + usage.substr(spec.size() + 2));
+      throw GridError(spec + ": '" + std::string(part) + "' is not a number; " +
+                      usage.substr(spec.size() + 2));
     axis.values.push_back(v);
   }
   return axis;

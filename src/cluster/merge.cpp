@@ -130,8 +130,8 @@ std::string merged_json(const std::vector<ShardFile>& shards, const std::string&
   using json = nlohmann::ordered_json;
   const auto& r = shards.front().record;
   json j = json::parse(record_json(r));
-  for (const char* k : {"shard", "first_point", "end_point", "wall_seconds", "peak_memory_kib",
-                        "host"})
+  for (const char* k :
+       {"shard", "first_point", "end_point", "wall_seconds", "peak_memory_kib", "host"})
     j.erase(k);
   j["chainbreak_version"] = version;
   json list = json::array();

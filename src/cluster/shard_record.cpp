@@ -11,7 +11,8 @@ namespace {
 
 json grid_json(const Grid& g) {
   json axes = json::array();
-  for (const auto& a : g.axes) axes.push_back({{"key", a.key}, {"spec", a.spec}, {"values", a.values}});
+  for (const auto& a : g.axes)
+    axes.push_back({{"key", a.key}, {"spec", a.spec}, {"values", a.values}});
   return axes;
 }
 
@@ -76,8 +77,8 @@ ShardRecord parse_record(const std::string& text) {
 
 std::string record_mismatch(const ShardRecord& a, const ShardRecord& b) {
   if (a.scene_hash != b.scene_hash)
-    return "scene hash " + a.scene_hash + " (" + a.scene + ") differs from " + b.scene_hash +
-           " (" + b.scene + "): another scene file or other --set overrides";
+    return "scene hash " + a.scene_hash + " (" + a.scene + ") differs from " + b.scene_hash + " (" +
+           b.scene + "): another scene file or other --set overrides";
   if (a.solver != b.solver) return "solver " + a.solver + " differs from " + b.solver;
   if (a.header != b.header) return "header '" + a.header + "' differs from '" + b.header + "'";
   if (a.grid.axes.size() != b.grid.axes.size())

@@ -94,8 +94,10 @@ std::size_t throttle_from_array_arg(const std::string& arg, const std::string& e
   const std::string t = spec.substr(pct + 1);
   const auto r = std::from_chars(t.data(), t.data() + t.size(), k);
   if (r.ec != std::errc() || r.ptr != t.data() + t.size() || k == 0)
-    throw GridError("--sbatch-arg=" + arg + ": the throttle after % must be a whole number "
-                    "above zero, e.g. --array=" + expected + "%4");
+    throw GridError("--sbatch-arg=" + arg +
+                    ": the throttle after % must be a whole number "
+                    "above zero, e.g. --array=" +
+                    expected + "%4");
   return k;
 }
 

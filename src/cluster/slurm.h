@@ -13,12 +13,12 @@ namespace cb {
 
 struct SbatchJob {
   std::string job_name;
-  std::size_t shards = 1;               // S
-  std::vector<std::string> sweep;       // chainbreak (absolute) sweep SCENE ... without --shard/--csv
-  std::string shards_dir;               // absolute; CSVs, records and Slurm's logs go here
-  std::string merge_command;            // printed in the comments: how to merge by hand
+  std::size_t shards = 1;          // S
+  std::vector<std::string> sweep;  // chainbreak (absolute) sweep SCENE ... without --shard/--csv
+  std::string shards_dir;          // absolute; CSVs, records and Slurm's logs go here
+  std::string merge_command;       // printed in the comments: how to merge by hand
   std::vector<std::string> sbatch_args;  // extra #SBATCH lines, as the user gave them
-  std::size_t max_running = 0;          // the array's %K throttle; 0: none
+  std::size_t max_running = 0;           // the array's %K throttle; 0: none
 };
 
 // "0-7%2", "1,4": array task ids (shard - 1) for shards (1-based, sorted), with a throttle.

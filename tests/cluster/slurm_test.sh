@@ -63,6 +63,7 @@ SlurmctldLogFile=$tmp/slurmctld.log
 SlurmdLogFile=$tmp/slurmd.log
 AccountingStorageType=accounting_storage/none
 JobCompType=jobcomp/none
+MaxArraySize=64
 NodeName=$host NodeAddr=127.0.0.1 CPUs=$(nproc) State=UNKNOWN
 PartitionName=test Nodes=ALL Default=YES MaxTime=INFINITE State=UP
 CONF
@@ -92,11 +93,12 @@ grid=(--vary chain.threshold=1:4:4 --values drive.beta=0.02,0.03,0.05)  # 12 poi
 # 1. The whole grid as an array of 4, merged, against a local sweep.
 "$cb" sweep "$scene" "${grid[@]}" --jobs 2 --quiet --csv "$tmp/out/local.csv"
 t0=$(date +%s.%N)
-"$cb" sweep "$scene" "${grid[@]}" --submit slurm --tasks 4 --wait --csv "$tmp/out/map.csv" \
-  || fail "submit --wait exited $?"
+"$cb" sweep "$scene" "${grid[@]}" --submit slurm --tasks 4 --wait --max-running 2 \
+  --csv "$tmp/out/map.csv" || fail "submit --wait exited $?"
 t1=$(date +%s.%N)
 cmp "$tmp/out/local.csv" "$tmp/out/map.csv" || fail "the merged CSV differs from the local sweep"
 grep -q '"shards"' "$tmp/out/map.json" || fail "no shards in map.json"
+grep -qx "#SBATCH --array=0-3%2" "$tmp/out/map.sbatch" || fail "no throttle in map.sbatch"
 echo "ok 1: 4-task array merged byte-identical to the local sweep ($(awk "BEGIN{print $t1 - $t0}") s)"
 
 # 2. A failing task: a folder where shard 2's CSV goes makes its sweep fail at the end.
@@ -123,6 +125,16 @@ grep -q ": 1 of 4 shards (array 1)" "$tmp/resume.out" || fail "the resume did no
   || fail "the resume recomputed a complete shard"
 cmp "$tmp/out/local.csv" "$tmp/out/fault.csv" || fail "the resumed CSV differs from the local sweep"
 echo "ok 2: failed shard named, resumed alone, byte-identical"
+
+# The cluster's MaxArraySize (64 here) is named when --tasks exceeds it.
+set +e
+"$cb" sweep "$scene" --solver exact --vary chain.threshold=1:4:65 --submit slurm --tasks 65 \
+  --csv "$tmp/out/too_many.csv" 2>"$tmp/too_many.err"
+status=$?
+set -e
+[ "$status" = 2 ] && grep -q "MaxArraySize is 64" "$tmp/too_many.err" \
+  || fail "--tasks 65 over MaxArraySize=64: status $status, $(cat "$tmp/too_many.err")"
+echo "ok: --tasks over MaxArraySize refused with the limit named"
 
 # 3. Speed: the same grid, bigger, locally on 2 threads and as a 4-task array.
 big=(--vary chain.threshold=1:4:8 --values drive.beta=0.01,0.02,0.03,0.05 --set chain.beads=10000)
