@@ -98,13 +98,14 @@ TEST_CASE("merge names missing points and the command that recomputes them", "[c
   const TempDir dir;
   const std::string base = "sweep " + scene("anomalous_breaking.toml") + kGrid;
   REQUIRE(run_chainbreak(base + " --csv " + dir.file("full.csv")).status == 0);
+  fs::create_directories(dir.path / "s");
   for (int i : {1, 3})
     REQUIRE(run_chainbreak(base + " --shard " + std::to_string(i) + "/3 --csv " +
-                           dir.file("shard-000" + std::to_string(i) + "-of-0003.csv"))
+                           dir.file("s/shard-000" + std::to_string(i) + "-of-0003.csv"))
                 .status == 0);
-  const auto m =
-      run_chainbreak("merge --csv " + dir.file("m.csv") + " " + dir.file("shard-0001-of-0003.csv") +
-                     " " + dir.file("shard-0003-of-0003.csv"));
+  const auto m = run_chainbreak("merge --csv " + dir.file("m.csv") + " " +
+                                dir.file("s/shard-0001-of-0003.csv") + " " +
+                                dir.file("s/shard-0003-of-0003.csv"));
   CHECK(m.status == 1);
   CHECK_THAT(m.err, Catch::Contains("2 of 6 grid points missing: 2-3"));
   CHECK_FALSE(fs::exists(dir.file("m.csv")));
@@ -114,7 +115,7 @@ TEST_CASE("merge names missing points and the command that recomputes them", "[c
   const std::string command = m.err.substr(at + 2, m.err.find('\n', at) - at - 2);
   CHECK_THAT(command, Catch::Contains("--shard 2/3 --csv " + dir.file("s/shard-0002-of-0003.csv")));
   REQUIRE(run_shell(command + " --quiet").status == 0);
-  REQUIRE(run_chainbreak("merge --csv " + dir.file("m.csv") + " " + dir.path.string()).status == 0);
+  REQUIRE(run_chainbreak("merge --csv " + dir.file("m.csv") + " " + dir.file("s")).status == 0);
   CHECK(slurp(dir.file("m.csv")) == slurp(dir.file("full.csv")));
 }
 
