@@ -137,7 +137,7 @@ set -e
 echo "ok: --tasks over MaxArraySize refused with the limit named"
 
 # 3. Speed: the same grid, bigger, locally on 2 threads and as a 4-task array.
-big=(--vary chain.threshold=1:4:8 --values drive.beta=0.01,0.02,0.03,0.05 --set chain.beads=10000)
+big=(--vary chain.threshold=1:4:8 --values drive.beta=0.01,0.02,0.03,0.05 --set chain.beads=3000)
 t0=$(date +%s.%N)
 "$cb" sweep "$scene" "${big[@]}" --jobs 2 --quiet --csv "$tmp/out/big_local.csv"
 t1=$(date +%s.%N)
@@ -147,6 +147,6 @@ t2=$(date +%s.%N)
 cmp "$tmp/out/big_local.csv" "$tmp/out/big.csv" || fail "the big merged CSV differs"
 local_s=$(awk "BEGIN{printf \"%.2f\", $t1 - $t0}")
 slurm_s=$(awk "BEGIN{printf \"%.2f\", $t2 - $t1}")
-echo "speed: 32 points, N = 10000, RK4: local --jobs 2 ${local_s} s, Slurm 4-task array" \
+echo "speed: 32 points, N = 3000, RK4: local --jobs 2 ${local_s} s, Slurm 4-task array" \
   "${slurm_s} s, ratio $(awk "BEGIN{printf \"%.2f\", $slurm_s / $local_s}") (goal <= 1.5)"
 echo "PASS"
