@@ -27,7 +27,7 @@ TEST_CASE("A grid numbers its points with the first axis slowest", "[cluster]") 
   CHECK(one.csv_header() == "value,spring,tau");  // the historical one-key header
 }
 
-TEST_CASE("--vary spaces values linearly or geometrically, ending on HI exactly", "[cluster]") {
+TEST_CASE("A --vary axis spaces values linearly or geometrically, ending on HI exactly", "[cluster]") {
   const auto lin = parse_vary("chain.threshold=5:200:13");
   REQUIRE(lin.values.size() == 13);
   CHECK(lin.values.front() == 5);
@@ -36,6 +36,8 @@ TEST_CASE("--vary spaces values linearly or geometrically, ending on HI exactly"
   const auto lg = parse_vary("drive.beta=0.001:10:5:log");  // decades: 1e-3, 1e-2, ..., 10
   REQUIRE(lg.values.size() == 5);
   for (int k = 0; k < 5; ++k) CHECK(lg.values[k] == Approx(std::pow(10.0, k - 3)).epsilon(1e-14));
+  CHECK(lg.values.front() == 0.001);  // the ends exactly as typed, not exp(log(0.001))
+  CHECK(lg.values.back() == 10);
   CHECK(parse_vary("chain.gamma=0.3:0.9:1").values == std::vector<double>{0.3});
 }
 
@@ -70,7 +72,7 @@ TEST_CASE("Shards are contiguous balanced blocks that cover every point once", "
     }
 }
 
-TEST_CASE("--shard slurm maps a contiguous array onto shards 1..S", "[cluster]") {
+TEST_CASE("Slurm array variables (--shard slurm) map a contiguous array onto shards 1..S", "[cluster]") {
   std::map<std::string, std::string> env = {
       {"SLURM_ARRAY_TASK_ID", "5"}, {"SLURM_ARRAY_TASK_MIN", "4"}, {"SLURM_ARRAY_TASK_COUNT", "3"}};
   auto get = [&](const char* k) -> const char* {

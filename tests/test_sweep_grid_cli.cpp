@@ -176,7 +176,7 @@ TEST_CASE("Bad grid specs exit 2 saying how to fix them", "[cli][sweep]") {
   CHECK(dir.names().empty());  // nothing written, not even a record
 }
 
-TEST_CASE("--shard slurm takes the shard from the array task's variables", "[cli][sweep]") {
+TEST_CASE("A sweep with --shard slurm takes the shard from the array task's variables", "[cli][sweep]") {
   const TempDir dir;
   const std::string base = "sweep " + scene("anomalous_breaking.toml") + kGrid;
   REQUIRE(run_chainbreak(base + " --shard 2/3 --csv " + dir.file("direct.csv")).status == 0);
@@ -191,7 +191,7 @@ TEST_CASE("--shard slurm takes the shard from the array task's variables", "[cli
   CHECK_THAT(missing.err, Catch::Contains("SLURM_ARRAY_TASK_ID is not set"));
 }
 
-TEST_CASE("--submit slurm without sbatch on PATH says so and writes nothing", "[cli][sweep]") {
+TEST_CASE("A submit without sbatch on PATH says so and writes nothing", "[cli][sweep]") {
   const TempDir dir;
   const auto r = run_shell("env PATH=" + dir.path.string() + " " + std::string(CHAINBREAK_EXE) +
                            " sweep " + scene("anomalous_breaking.toml") + kGrid +

@@ -85,11 +85,12 @@ GridAxis parse_vary(const std::string& text) {
       axis.values.push_back(lo);
       break;
     }
-    // The last value is HI exactly, not LO + (n-1) * step rounded.
+    // The ends are LO and HI exactly, not exp(log(LO)) or LO + (n-1) * step rounded.
     const double w = static_cast<double>(i) / static_cast<double>(n - 1);
-    axis.values.push_back(i + 1 == n ? hi
-                          : log      ? std::exp(std::log(lo) + w * (std::log(hi) - std::log(lo)))
-                                     : lo + w * (hi - lo));
+    axis.values.push_back(i == 0       ? lo
+                          : i + 1 == n ? hi
+                          : log        ? std::exp(std::log(lo) + w * (std::log(hi) - std::log(lo)))
+                                       : lo + w * (hi - lo));
   }
   return axis;
 }
