@@ -207,6 +207,10 @@ int submit_sweep(const SweepOptions& o, const Grid& grid) {
                  job_id.c_str(), dir.c_str(), job_id.c_str());
     return 1;
   }
+  if (present.size() < S)
+    std::fprintf(
+        stderr, "chainbreak: %zu of %zu shards did not complete; Slurm's logs: %s/slurm-%s_*.out\n",
+        S - present.size(), S, dir.c_str(), job_id.c_str());
   return merge_shards(o.csv, present, o.quiet);
 }
 

@@ -114,6 +114,8 @@ grep -q "3 of 12 grid points missing: 3-5" "$tmp/fault.err" || fail "missing poi
 grep -q -- "--shard 2/4 --csv $tmp/out/fault.csv.shards/shard-0002-of-0004.csv" "$tmp/fault.err" \
   || fail "no command recomputing shard 2"
 grep -q "sbatch --array=1 " "$tmp/fault.err" || fail "no sbatch line for shard 2"
+grep -q "1 of 4 shards did not complete; Slurm's logs: $tmp/out/fault.csv.shards/slurm-" \
+  "$tmp/fault.err" || fail "the failed shard's log is not named"
 [ ! -e "$tmp/out/fault.csv" ] || fail "a merged CSV was written with points missing"
 rmdir "$tmp/out/fault.csv.shards/shard-0002-of-0004.csv"
 before=$(stat -c %y "$tmp/out/fault.csv.shards/shard-0001-of-0004.json")
