@@ -29,14 +29,29 @@ int run_command(const RunOptions& options);
 struct SweepOptions {
   std::string scene;
   std::vector<Override> overrides;
-  std::string vary;            // KEY=LO:HI:COUNT[:log]
+  // The grid's axes in command-line order (first slowest): "--vary KEY=LO:HI:COUNT[:log]" or
+  // "--values KEY=V1,V2,...", each kept with its option name.
+  std::vector<std::string> axes;
   std::string solver = "rk4";  // rk4 | exact
   int jobs = 0;                // 0: all cores
-  std::string shard = "1/1";   // I/S, I in 1..S
+  std::string shard = "1/1";   // I/S, I in 1..S, or "slurm" (from the array task's variables)
   std::string csv;
   bool quiet = false;
+  // --submit slurm: an sbatch array of `tasks` shards instead of computing here.
+  std::string submit;
+  int tasks = 0;
+  bool wait = false;                     // follow the array, then merge
+  std::vector<std::string> sbatch_args;  // extra #SBATCH lines
+  int max_running = 0;                   // the array's %K throttle; 0: none
 };
 int sweep_command(const SweepOptions& options);
+
+struct MergeOptions {
+  std::string csv;                  // merged table; its record goes to the same name .json
+  std::vector<std::string> inputs;  // shard CSVs or folders of them
+  bool quiet = false;
+};
+int merge_command(const MergeOptions& options);
 
 struct SnapshotOptions {
   std::string scene;                // the first (or only) scene

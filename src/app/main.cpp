@@ -4,6 +4,8 @@
 #include <cstdio>
 
 #include "app/commands.h"
+#include "cluster/grid.h"
+#include "cluster/merge.h"
 #include "drive/drive.h"
 #include "gl/gl_context.h"
 #include "output/output_file.h"
@@ -59,21 +61,50 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("--quiet,-q", run.quiet, "No progress output");
 
   cb::SweepOptions sweep;
+  std::vector<std::string> varies, values;
   auto* sweep_cmd = app.add_subcommand(
-      "sweep", "Which spring breaks first as one key varies; CSV value,spring,tau");
+      "sweep",
+      "Which spring breaks first over a grid of scene keys; CSV value,spring,tau (one key) or "
+      "KEY1,KEY2,...,spring,tau");
   sweep_cmd->add_option("scene", sweep.scene, "Scene file (scenes/*.toml)")->required();
   sweep_cmd->add_option("--set", sets, "Override a scene key (repeatable)");
-  sweep_cmd
-      ->add_option("--vary", sweep.vary, "KEY=LO:HI:COUNT[:log], e.g. chain.threshold=1:300:420")
-      ->required();
+  auto* vary_opt = sweep_cmd->add_option(
+      "--vary", varies,
+      "KEY=LO:HI:COUNT[:log], e.g. chain.threshold=1:300:420 (repeatable: a grid, first slowest)");
+  auto* values_opt = sweep_cmd->add_option(
+      "--values", values, "KEY=V1,V2,...: explicit values of a key (repeatable, with --vary)");
   sweep_cmd->add_option("--solver", sweep.solver, "rk4 or exact")
       ->check(CLI::IsMember({"rk4", "exact"}));
   sweep_cmd->add_option("--jobs,-j", sweep.jobs, "Parallel jobs (default: all cores)")
       ->check(CLI::NonNegativeNumber);
   sweep_cmd->add_option("--shard", sweep.shard,
-                        "I/S: compute only the I-th of S contiguous blocks of values");
+                        "I/S: compute only the I-th of S contiguous blocks of the grid; slurm: "
+                        "take I and S from the Slurm array task");
   sweep_cmd->add_option("--csv", sweep.csv, "Output CSV")->required();
   sweep_cmd->add_flag("--quiet,-q", sweep.quiet, "No progress output");
+  sweep_cmd
+      ->add_option("--submit", sweep.submit,
+                   "slurm: submit the grid as an sbatch array of --tasks shards (script beside "
+                   "the CSV, shards in CSV.shards/); rerun to resubmit only unfinished shards")
+      ->check(CLI::IsMember({"slurm"}));
+  sweep_cmd->add_option("--tasks", sweep.tasks, "Shards (array tasks) for --submit")
+      ->check(CLI::PositiveNumber);
+  sweep_cmd->add_flag("--wait", sweep.wait, "With --submit: follow the array, then merge");
+  sweep_cmd->add_option("--sbatch-arg", sweep.sbatch_args,
+                        "With --submit: an sbatch option for the script, e.g. "
+                        "--sbatch-arg=--partition=short (repeatable)");
+  sweep_cmd
+      ->add_option("--max-running", sweep.max_running,
+                   "With --submit: at most K array tasks at once (the array's %K)")
+      ->check(CLI::PositiveNumber);
+
+  cb::MergeOptions merge;
+  auto* merge_cmd = app.add_subcommand(
+      "merge", "Shards of a sweep into one CSV in grid order, checked: every point exactly once");
+  merge_cmd->add_option("--csv", merge.csv, "Merged CSV (and its record, .json)")->required();
+  merge_cmd->add_option("shards", merge.inputs, "Shard CSVs or the folder holding them")
+      ->required();
+  merge_cmd->add_flag("--quiet,-q", merge.quiet, "No summary line");
 
   // Options every frame-making command shares.
   auto add_frame_options = [](CLI::App* cmd, cb::FrameOptions& f) {
@@ -201,12 +232,23 @@ int main(int argc, char** argv) {
       view.args = view_cmd->remaining();
       return cb::view_command(view);
     }
+    if (merge_cmd->parsed()) return cb::merge_command(merge);
     sweep.overrides = overrides;
+    // The grid's axes in the order they were typed: the first varies slowest.
+    std::size_t next_vary = 0, next_values = 0;
+    for (const CLI::Option* opt : sweep_cmd->parse_order()) {
+      if (opt == vary_opt) sweep.axes.push_back("--vary " + varies.at(next_vary++));
+      if (opt == values_opt) sweep.axes.push_back("--values " + values.at(next_values++));
+    }
     return cb::sweep_command(sweep);
   } catch (const cb::SceneError& e) {
     return user_error(e.what(), "");
   } catch (const cb::DriveError& e) {
     return user_error(e.what(), "");
+  } catch (const cb::GridError& e) {
+    return user_error(e.what(), "chainbreak: ");
+  } catch (const cb::MergeError& e) {
+    return user_error(e.what(), "chainbreak merge: ");
   } catch (const cb::OutputError& e) {
     return user_error(e.what(), "chainbreak: ");
   } catch (const cb::GlError& e) {

@@ -8,25 +8,13 @@
 #include "app/csv.h"
 #include "output/output_file.h"
 #include "output/video_encoder.h"
+#include "scene/scene_hash.h"
 
 namespace cb {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-// FNV-1a over the scene file and the overrides: which inputs made this video.
-std::string scene_hash(const SceneDesc& scene, const std::vector<Override>& overrides) {
-  std::ifstream in(scene.path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  for (const auto& o : overrides) text << '\n' << o.key << '=' << o.value;
-  std::uint64_t h = 1469598103934665603ull;
-  for (unsigned char c : text.str()) h = (h ^ c) * 1099511628211ull;
-  char buf[20];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
-}
 
 std::string numbers_json(const std::vector<double>& values) {
   std::string out = "[";
@@ -107,7 +95,7 @@ RenderPlan plan_render(const SceneDesc& scene, const RenderOptions& o) {
   if (o.title_card >= 0) p.frame.title_card = o.title_card;
   p.overlay = overlay_switches(p.frame, o);
   p.overlay_layout = overlay_layout(p.frame.width, p.frame.height, p.overlay);
-  p.scene_hash = scene_hash(scene, o.overrides);
+  p.scene_hash = scene_hash(scene.path, o.overrides);
   return p;
 }
 

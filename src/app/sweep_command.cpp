@@ -1,14 +1,21 @@
-// `chainbreak sweep`: which spring breaks first as one scene key varies.
+// `chainbreak sweep`: which spring breaks first over a grid of scene keys (one or more
+// --vary / --values), the whole grid or one shard of it; with --submit, as a Slurm array
+// (sweep_submit.cpp).
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <algorithm>
-#include <charconv>
-#include <cmath>
+#include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <mutex>
 #include <thread>
 
 #include "app/commands.h"
 #include "app/csv.h"
 #include "app/progress.h"
+#include "app/sweep_setup.h"
+#include "cluster/shard.h"
 #include "exact/first_break.h"
 #include "figures/break_maps.h"
 #include "output/output_file.h"
@@ -16,66 +23,9 @@
 
 namespace cb {
 
+int submit_sweep(const SweepOptions& o, const Grid& grid);  // sweep_submit.cpp
+
 namespace {
-
-struct Vary {
-  std::string key;
-  double lo = 0, hi = 0;
-  int count = 0;
-  bool log = false;
-  double value(int i) const {
-    if (count == 1) return lo;
-    const double w = static_cast<double>(i) / (count - 1);
-    return log ? std::exp(std::log(lo) + w * (std::log(hi) - std::log(lo))) : lo + w * (hi - lo);
-  }
-};
-
-bool parse_double(std::string_view text, double& out) {
-  const auto r = std::from_chars(text.data(), text.data() + text.size(), out);
-  return r.ec == std::errc() && r.ptr == text.data() + text.size();
-}
-
-std::vector<std::string_view> split(std::string_view text, char sep) {
-  std::vector<std::string_view> parts;
-  for (std::size_t start = 0;;) {
-    const auto end = text.find(sep, start);
-    parts.push_back(text.substr(start, end - start));
-    if (end == std::string_view::npos) return parts;
-    start = end + 1;
-  }
-}
-
-Vary parse_vary(const std::string& text) {
-  const std::string usage =
-      "--vary " + text + ": expected KEY=LO:HI:COUNT[:log], e.g. --vary chain.threshold=1:300:420";
-  const auto eq = text.find('=');
-  if (eq == std::string::npos || eq == 0) throw SceneError(usage);
-  Vary v;
-  v.key = text.substr(0, eq);
-  const auto parts = split(std::string_view(text).substr(eq + 1), ':');
-  double count = 0;
-  if (parts.size() < 3 || parts.size() > 4 || !parse_double(parts[0], v.lo) ||
-      !parse_double(parts[1], v.hi) || !parse_double(parts[2], count) || count < 1 ||
-      count != std::floor(count) || (parts.size() == 4 && parts[3] != "log"))
-    throw SceneError(usage);
-  v.count = static_cast<int>(count);
-  v.log = parts.size() == 4;
-  if (v.log && (v.lo <= 0 || v.hi <= 0))
-    throw SceneError("--vary " + text + ": a log sweep needs LO and HI above zero");
-  return v;
-}
-
-// Shard "I/S" (I in 1..S) of `count` values: a contiguous block, so concatenating the
-// shards' rows in order gives the full table.
-std::pair<int, int> parse_shard(const std::string& text, int count) {
-  const auto parts = split(text, '/');
-  double i = 0, s = 0;
-  if (parts.size() != 2 || !parse_double(parts[0], i) || !parse_double(parts[1], s) || s < 1 ||
-      i < 1 || i > s || i != std::floor(i) || s != std::floor(s))
-    throw SceneError("--shard " + text + ": expected I/S with 1 <= I <= S, e.g. --shard 2/8");
-  const long n = count, si = static_cast<long>(s), ii = static_cast<long>(i) - 1;
-  return {static_cast<int>(n * ii / si), static_cast<int>(n * (ii + 1) / si)};
-}
 
 // The first break of one scene by RK4 (stopping at it) or by the exact solution.
 FirstBreak first_break_of(const SceneDesc& scene, const std::string& solver) {
@@ -88,25 +38,58 @@ FirstBreak first_break_of(const SceneDesc& scene, const std::string& solver) {
   }
 }
 
+// One CSV row: the point's values, then the spring that broke first and when (both empty
+// when nothing broke by t_end).
+void append_row(std::string& text, const std::vector<double>& values, const FirstBreak& b) {
+  for (double v : values) {
+    append_number(text, v);
+    text += ',';
+  }
+  if (b.broke) {
+    text += std::to_string(b.spring) + ",";
+    append_number(text, b.tau);
+  } else {
+    text += ',';
+  }
+  text += '\n';
+}
+
+Shard sweep_shard(const std::string& text) {
+  if (text == "slurm") return shard_from_slurm([](const char* name) { return std::getenv(name); });
+  return parse_shard(text);
+}
+
+std::string host_name() {
+  char buf[256] = {};
+  return ::gethostname(buf, sizeof buf - 1) == 0 ? buf : "";
+}
+
+long peak_memory_kib() {
+  rusage u{};
+  return ::getrusage(RUSAGE_SELF, &u) == 0 ? u.ru_maxrss : 0;
+}
+
 }  // namespace
 
 int sweep_command(const SweepOptions& o) {
   if (o.solver != "rk4" && o.solver != "exact")
     throw SceneError("--solver " + o.solver + ": sweep supports rk4 or exact");
-  const Vary vary = parse_vary(o.vary);
-  const auto [first, last] = parse_shard(o.shard, vary.count);
+  if (record_path(o.csv) == o.csv)
+    throw SceneError("--csv " + o.csv + ": the sweep's record goes to " + o.csv +
+                     " (the CSV's name with .json); name the CSV .csv");
+  const auto start = std::chrono::steady_clock::now();
+  const Grid grid = sweep_grid(o);
+  if (!o.submit.empty()) return submit_sweep(o, grid);
+  if (o.tasks > 0 || o.wait || !o.sbatch_args.empty() || o.max_running > 0)
+    throw GridError(
+        "--tasks, --wait, --sbatch-arg and --max-running go with --submit slurm; "
+        "add --submit slurm, or drop them for a sweep on this machine");
+  const Shard shard = sweep_shard(o.shard);
+  const PointRange range = shard_points(grid.size(), shard);
   // Validate the scene and every value before any work: a bad value fails now, not at row 300.
-  std::vector<SceneDesc> scenes;
-  for (int i = first; i < last; ++i) {
-    auto overrides = o.overrides;
-    overrides.push_back({vary.key, number_text(vary.value(i))});
-    scenes.push_back(load_scene(o.scene, overrides));
-    if (o.solver == "exact" && scenes.back().drive.type == DriveType::Expr)
-      throw SceneError(
-          o.scene +
-          ": the exact first break has no closed form for an expr drive; use --solver rk4");
-  }
+  const std::vector<SceneDesc> scenes = point_scenes(o, grid, range);
   OutputFile out(o.csv);
+  OutputFile out_record(record_path(o.csv));
   std::vector<FirstBreak> results(scenes.size());
   const int jobs = o.jobs > 0 ? o.jobs : std::max(1u, std::thread::hardware_concurrency());
   std::atomic<std::size_t> next{0};
@@ -126,7 +109,7 @@ int sweep_command(const SweepOptions& o) {
     }
   };
   {
-    Progress progress("sweep " + vary.key, static_cast<double>(scenes.size()), o.quiet);
+    Progress progress("sweep", static_cast<double>(scenes.size()), o.quiet);
     std::vector<std::thread> pool;
     for (int t = 1; t < std::min<int>(jobs, static_cast<int>(scenes.size())); ++t)
       pool.emplace_back(worker);
@@ -150,23 +133,23 @@ int sweep_command(const SweepOptions& o) {
     std::fprintf(stderr, "chainbreak: %s\n", failure.c_str());
     return 1;
   }
-  std::string text = "value,spring,tau\n";
-  for (std::size_t i = 0; i < results.size(); ++i) {
-    append_number(text, vary.value(first + static_cast<int>(i)));
-    text += ',';
-    if (results[i].broke) {
-      text += std::to_string(results[i].spring) + ",";
-      append_number(text, results[i].tau);
-    } else {
-      text += ',';
-    }
-    text += '\n';
-  }
+  std::string text = grid.csv_header() + "\n";
+  for (std::size_t i = 0; i < results.size(); ++i)
+    append_row(text, grid.point(range.first + i), results[i]);
   out.write(text);
   out.commit();
+  // The record last: its presence says the CSV is complete (resubmission and merge rely on it).
+  ShardRecord record = sweep_record(o, grid);
+  record.shard = shard;
+  record.points = range;
+  record.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  record.peak_memory_kib = peak_memory_kib();
+  record.host = host_name();
+  out_record.write(record_json(record));
+  out_record.commit();
   if (!o.quiet)
-    std::fprintf(stderr, "sweep: %zu values of %s written to %s\n", results.size(),
-                 vary.key.c_str(), o.csv.c_str());
+    std::fprintf(stderr, "sweep: %zu points written to %s\n", results.size(), o.csv.c_str());
   return 0;
 }
 
