@@ -8,6 +8,7 @@
 #include "app/csv.h"
 #include "output/output_file.h"
 #include "output/video_encoder.h"
+#include "physics/simd.h"
 
 namespace cb {
 
@@ -152,6 +153,7 @@ std::string plan_json(const SceneDesc& scene, const RenderPlan& p, const std::st
   j += ",\"tau_per_second\":" + number_text(p.frame.speed) +
        ",\"tau_end\":" + number_text(static_cast<double>(p.frames - 1) * p.tau_per_frame);
   if (!gl.empty()) j += ",\"gl\":" + json_string(gl);
+  j += ",\"simd\":" + json_string(simd_name(active_simd()));  // the path the frames ran on
   j += ",\"breaks\":[";
   for (std::size_t i = 0; i < breaks.size(); ++i) {
     // The first frame that shows the break.
