@@ -195,8 +195,8 @@ TEST_CASE("run names the path in its JSON, same numbers on each; a bad CHAINBREA
   nlohmann::json first;
   for (cb::SimdPath path : {cb::SimdPath::Sse2, cb::SimdPath::Avx2, cb::SimdPath::Avx512}) {
     if (!cb::simd_supported(path)) continue;
-    const auto r = cb::test::run_shell(std::string("CHAINBREAK_SIMD=") + cb::simd_name(path) +
-                                       " " + exe + " run " + scene + " --quiet");
+    const auto r = cb::test::run_shell(std::string("CHAINBREAK_SIMD=") + cb::simd_name(path) + " " +
+                                       exe + " run " + scene + " --quiet");
     INFO(r.err);
     REQUIRE(r.status == 0);
     auto summary = nlohmann::json::parse(r.out);
