@@ -86,7 +86,7 @@ TEST_CASE("observers see the start and every k-th step", "[run_loop]") {
   CHECK(sim.state().step == 12);
 }
 
-TEST_CASE("the cancel flag stops the run before the next step; a blow-up is Failed", "[run_loop]") {
+TEST_CASE("the cancel flag stops the run before the next step, a blow-up is Failed", "[run_loop]") {
   cb::ChainParams p;
   p.beads = 8;
   cb::Integrator sim(p, ramp(0.01), {kDt, 1});
