@@ -8,6 +8,7 @@
 #include "overlay/overlay_history.h"
 #include "physics/energy.h"
 #include "physics/integrator.h"
+#include "physics/run_loop.h"
 
 namespace cb {
 
@@ -86,31 +87,28 @@ RunExtent measure_run(const SceneDesc& scene, double tau_stop, double dt,
   RunExtent e;
   e.tau_stop = tau_stop;
   double psi = 0.0, force = 0.0, strain = 0.0;
-  auto last = static_cast<std::int64_t>(std::llround(tau_stop / dt));
-  bool broken = false;
-  while (sim.state().step < last) {
-    if (!sim.step()) throw std::runtime_error(sim.error());
-    if (sample_every > 0 && sim.state().breaks.empty() && sim.state().step % sample_every == 0)
-      sample_overlay(sim.state(), scene.chain, e);
-    if (!broken) {
-      const auto& x = sim.state().psi;
-      for (std::size_t i = 0; i < x.size(); ++i) {
-        psi = std::max(psi, std::abs(x[i]));
-        strain = std::max(strain, std::abs(x[i] - (i ? x[i - 1] : 0.0)));
-      }
-      force = std::max(force, std::abs(sim.force_now()));
-    }
-    if (!broken && !sim.state().breaks.empty()) {
-      broken = true;
-      if (scene.integrator.after_break)
-        e.tau_stop =
-            std::min(tau_stop, sim.state().breaks.front().tau + *scene.integrator.after_break);
-      if (e.tau_stop < tau_stop) {
-        if (!every_break) break;
-        // Slow motion needs every break the video shows: on to where the video stops.
-        last = static_cast<std::int64_t>(std::floor(e.tau_stop / dt + 1e-9));
-      }
-    }
+  const auto last = static_cast<std::int64_t>(std::llround(tau_stop / dt));
+  // Nothing is measured after the first break, so the pre-pass ends there.
+  const StopRule stop{last, std::nullopt, true, nullptr};
+  const Observer watch{
+      1, false, [&](const Integrator& s) {
+        if (sample_every > 0 && s.state().breaks.empty() && s.state().step % sample_every == 0)
+          sample_overlay(s.state(), scene.chain, e);
+        const auto& x = s.state().psi;
+        for (std::size_t i = 0; i < x.size(); ++i) {
+          psi = std::max(psi, std::abs(x[i]));
+          strain = std::max(strain, std::abs(x[i] - (i ? x[i - 1] : 0.0)));
+        }
+        force = std::max(force, std::abs(s.force_now()));
+      }};
+  if (run_until(sim, stop, {watch}) == RunEnd::Failed) throw std::runtime_error(sim.error());
+  if (!sim.state().breaks.empty() && scene.integrator.after_break)
+    e.tau_stop = std::min(tau_stop, sim.state().breaks.front().tau + *scene.integrator.after_break);
+  if (every_break && !sim.state().breaks.empty()) {
+    // Slow motion needs every break the video shows: on to where the video stops.
+    const StopRule rest{static_cast<std::int64_t>(std::floor(e.tau_stop / dt + 1e-9)), std::nullopt,
+                        false, nullptr};
+    if (run_until(sim, rest) == RunEnd::Failed) throw std::runtime_error(sim.error());
   }
   for (const BreakEvent& b : sim.state().breaks)
     if (b.tau <= e.tau_stop) e.breaks.push_back(b);

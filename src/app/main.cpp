@@ -9,6 +9,7 @@
 #include "drive/drive.h"
 #include "gl/gl_context.h"
 #include "output/output_file.h"
+#include "physics/simd.h"
 
 namespace cb {
 std::atomic<bool> g_interrupted{false};
@@ -211,6 +212,7 @@ int main(int argc, char** argv) {
   }
 
   try {
+    cb::active_simd();  // a bad CHAINBREAK_SIMD is a user error before any work
     const auto overrides = parse_overrides(sets);
     if (run_cmd->parsed()) {
       run.overrides = overrides;
@@ -250,6 +252,8 @@ int main(int argc, char** argv) {
   } catch (const cb::MergeError& e) {
     return user_error(e.what(), "chainbreak merge: ");
   } catch (const cb::OutputError& e) {
+    return user_error(e.what(), "chainbreak: ");
+  } catch (const cb::SimdChoiceError& e) {
     return user_error(e.what(), "chainbreak: ");
   } catch (const cb::GlError& e) {
     std::fprintf(stderr, "chainbreak: %s\n", e.what());

@@ -9,6 +9,7 @@
 #include "output/output_file.h"
 #include "output/video_encoder.h"
 #include "scene/scene_hash.h"
+#include "physics/simd.h"
 
 namespace cb {
 
@@ -157,6 +158,7 @@ std::string plan_json(const SceneDesc& scene, const RenderPlan& p, const std::st
                   ",\"window\":" + number_text(p.grid.slow_motion().window) + "}"
             : std::string("null"));
   if (!gl.empty()) j += ",\"gl\":" + json_string(gl);
+  j += ",\"simd\":" + json_string(simd_name(active_simd()));  // the path the frames ran on
   j += ",\"breaks\":" + breaks_json(p, breaks);
   // Every video frame's tau: the title card's frames show the chain at rest (tau 0).
   std::vector<double> taus(static_cast<std::size_t>(p.title_frames), 0.0);

@@ -13,6 +13,7 @@
 #include "output/output_file.h"
 #include "physics/energy.h"
 #include "physics/integrator.h"
+#include "physics/run_loop.h"
 
 namespace cb {
 
@@ -89,6 +90,7 @@ struct RunResult {
   double tau_end = 0.0;
   std::vector<BreakEvent> breaks;
   std::optional<ChainState> final_state;  // rk4 only: for the energy books
+  std::optional<SimdPath> simd;           // rk4 only: the kernel's instruction set
 };
 
 int finish(const RunOptions& o, const SceneDesc& scene, const RunResult& r,
@@ -102,6 +104,7 @@ int finish(const RunOptions& o, const SceneDesc& scene, const RunResult& r,
        (scene.chain.breakable() ? number_text(scene.chain.threshold) : std::string("null"));
   j += ",\"drive\":" + json_string(drive_type_name(scene.drive.type));
   j += ",\"dt\":" + number_text(scene.integrator.dt);
+  if (r.simd) j += ",\"simd\":" + json_string(simd_name(*r.simd));
   j += ",\"breaks\":" + breaks_json(r.breaks, scene.units);
   j += ",\"steps\":" + std::to_string(r.steps) + ",\"tau_end\":" + number_text(r.tau_end);
   if (r.final_state) {
@@ -141,7 +144,7 @@ std::int64_t planned_steps(const SceneDesc& s) {
 int run_rk4(const RunOptions& o, const SceneDesc& scene, CsvTable* csv) {
   const double dt = scene.integrator.dt;
   Integrator sim(scene.chain, make_forcing(scene.drive), {dt, o.threads});
-  std::int64_t last = planned_steps(scene);
+  const std::int64_t last = planned_steps(scene);
   Progress progress("run " + scene.name, static_cast<double>(last), o.quiet);
   Sample sample;
   const int n = scene.chain.beads;
@@ -155,25 +158,22 @@ int run_rk4(const RunOptions& o, const SceneDesc& scene, CsvTable* csv) {
     sample.energy = energy(s);
     csv->row(sample);
   };
-  bool stop_set = false;
-  for (;;) {
-    if (csv && sim.state().step % o.every == 0) write_row();
-    if (sim.state().step >= last) break;
-    if (g_interrupted) {
+  StopRule stop{last, scene.integrator.after_break, false, &g_interrupted};
+  std::vector<Observer> observers;
+  if (csv) observers.push_back({o.every, true, [&](const Integrator&) { write_row(); }});
+  observers.push_back({1, false, [&](const Integrator& s) {
+                         progress.update(static_cast<double>(s.state().step));
+                       }});
+  switch (run_until(sim, stop, observers)) {
+    case RunEnd::Reached:
+      break;
+    case RunEnd::Cancelled:
       std::fprintf(stderr, "chainbreak: interrupted at tau = %g; no CSV written\n",
                    sim.state().tau);
       return 130;
-    }
-    if (!sim.step()) {
+    case RunEnd::Failed:
       std::fprintf(stderr, "chainbreak: %s\n", sim.error().c_str());
       return 1;
-    }
-    if (!stop_set && !sim.state().breaks.empty() && scene.integrator.after_break) {
-      const double stop_tau = sim.state().breaks.front().tau + *scene.integrator.after_break;
-      last = std::min(last, static_cast<std::int64_t>(std::ceil(stop_tau / dt - 1e-9)));
-      stop_set = true;
-    }
-    progress.update(static_cast<double>(sim.state().step));
   }
   if (csv) csv->commit();
   RunResult r;
@@ -181,6 +181,7 @@ int run_rk4(const RunOptions& o, const SceneDesc& scene, CsvTable* csv) {
   r.tau_end = sim.state().tau;
   r.breaks = sim.state().breaks;
   r.final_state = sim.state();
+  r.simd = sim.simd();
   return finish(o, scene, r, std::nullopt);
 }
 

@@ -1,5 +1,6 @@
 #include "viewer/session.h"
 
+#include "physics/run_loop.h"
 #include "snapshot/snapshot.h"
 
 namespace cb {
@@ -41,7 +42,8 @@ void Session::set_view(const std::string& view) {
 
 void Session::advance(std::int64_t count) {
   for (std::int64_t i = 0; i < count && !at_end() && error_.empty(); ++i) {
-    if (!sim_->advance_to(plan_.grid.step(frame_ + 1))) {
+    const StopRule next_frame{plan_.grid.step(frame_ + 1), std::nullopt, false, nullptr};
+    if (run_until(*sim_, next_frame) == RunEnd::Failed) {
       error_ = sim_->error();
       return;
     }
