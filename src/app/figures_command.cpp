@@ -54,6 +54,7 @@ int figures_command(const FiguresOptions& o) {
   FigureDrawer drawer(kFigureWidth, kFigureHeight);
   FigureOptions options;
   options.jobs = o.jobs;
+  options.stop = &g_interrupted;
   const auto start = std::chrono::steady_clock::now();
   int done = 0;
   const int total =
@@ -62,11 +63,13 @@ int figures_command(const FiguresOptions& o) {
     Progress progress("figures", total, o.quiet, "figures");
     for (const FigureEntry& entry : figure_entries()) {
       if (!only.empty() && !only.count(entry.name)) continue;
-      if (g_interrupted) {
-        std::fprintf(stderr, "chainbreak: interrupted after %d of %d figures\n", done, total);
-        return 130;
-      }
+      const auto left = [&] {
+        return "after " + std::to_string(done) + " of " + std::to_string(total) +
+               " figures (their PNG and CSV are complete)";
+      };
+      if (g_interrupted) return interrupted_status(left());
       const Figure figure = entry.build(options);
+      if (g_interrupted) return interrupted_status(left());  // the figure may be incomplete
       const std::filesystem::path stem = std::filesystem::path(o.out_dir) / entry.name;
       write_png(stem.string() + ".png", figure_image(*canvas.renderer, drawer, figure));
       OutputFile csv(stem.string() + ".csv");

@@ -12,7 +12,7 @@ FrameSource::FrameSource(const SceneDesc& scene, const RenderPlan& plan, int thr
 
 bool FrameSource::record_through(std::int64_t k) {
   for (; next_ <= k; ++next_) {
-    if (!sim_.advance_to(next_ * plan_.substeps)) return false;
+    if (!advance_watching(sim_, next_ * plan_.substeps)) return false;
     if (history_) history_->record(next_, sim_.state(), sim_.force_now());
   }
   return true;

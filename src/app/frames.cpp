@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "interrupt/interrupt.h"
 #include "overlay/overlay_history.h"
 #include "physics/energy.h"
 #include "physics/integrator.h"
@@ -39,8 +40,8 @@ RenderDesc frame_settings(const SceneDesc& scene, const FrameOptions& o) {
   if (!o.size.empty()) {
     int w = 0, h = 0;
     char tail = 0;
-    if (std::sscanf(o.size.c_str(), "%dx%d%c", &w, &h, &tail) != 2 || w < 16 || h < 16 ||
-        w > 16384 || h > 16384)
+    if (std::sscanf(o.size.c_str(), "%dx%d%c", &w, &h, &tail) != 2 || w < kMinFrameSide ||
+        h < kMinFrameSide || w > kMaxFrameSide || h > kMaxFrameSide)
       throw SceneError("--size " + o.size +
                        ": expected WIDTHxHEIGHT in pixels, 16..16384, e.g. 1920x1080");
     d.width = w;
@@ -81,6 +82,7 @@ RunExtent measure_run(const SceneDesc& scene, double tau_stop, double dt,
   const auto last = static_cast<std::int64_t>(std::llround(tau_stop / dt));
   bool broken = false;
   while (sim.state().step < last) {
+    throw_if_interrupted();  // the pre-pass of a long run takes a while
     if (!sim.step()) throw std::runtime_error(sim.error());
     if (sample_every > 0 && sim.state().breaks.empty() && sim.state().step % sample_every == 0)
       sample_overlay(sim.state(), scene.chain, e);
@@ -104,6 +106,14 @@ RunExtent measure_run(const SceneDesc& scene, double tau_stop, double dt,
   e.force_range = std::max(force, 1e-6);
   e.strain_range = std::max(strain, 1e-6);
   return e;
+}
+
+bool advance_watching(Integrator& sim, std::int64_t target_step) {
+  while (sim.state().step < target_step) {
+    if (g_interrupted.load(std::memory_order_relaxed)) return false;
+    if (!sim.step()) return false;
+  }
+  return true;
 }
 
 SnapshotStyle snapshot_style(const SceneDesc& scene, const RenderDesc& frame,

@@ -8,6 +8,7 @@
 #include "app/csv.h"
 #include "output/output_file.h"
 #include "output/video_encoder.h"
+#include "resources/resources.h"
 
 namespace cb {
 
@@ -75,6 +76,36 @@ OverlaySwitches overlay_switches(const RenderDesc& r, const RenderOptions& o) {
   return s;
 }
 
+// Counted in double before any integer holds them (issue #12, rows 5 and 6: --speed 1e-300
+// made the frame count overflow; --speed 1e-6 planned billions of frames and hung in the
+// pre-pass). The frames of the whole run (an after_break stop can only shorten it), and the
+// integrator steps of one frame, which must fit the step counter.
+// A count or a rate in 4 digits: the estimates above are not exact to the last frame.
+std::string approx(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
+}
+
+void require_frame_budget(const SceneDesc& scene, const RenderPlan& p) {
+  const double t_end = scene.integrator.t_end;
+  const double frames = std::floor(t_end / p.tau_per_frame + 1e-9) + 1;
+  if (!(frames <= kMaxFrames))
+    throw SceneError("render: " + approx(frames) + " frames (t_end = " + approx(t_end) + " at " +
+                     approx(p.tau_per_frame) + " tau a frame: speed " + approx(p.frame.speed) +
+                     " / fps " + approx(p.frame.fps) + ") is more than the limit of " +
+                     approx(kMaxFrames) + " frames; raise --speed (e.g. --speed " +
+                     approx(std::ceil(t_end * p.frame.fps / kMaxFrames * 10)) +
+                     "), lower --fps, or shorten integrator.t_end");
+  const double substeps = p.tau_per_frame / scene.integrator.dt;
+  if (!(substeps * frames <= kMaxRunSteps))
+    throw SceneError("render: " + approx(std::ceil(substeps)) +
+                     " integrator steps a frame (speed " + approx(p.frame.speed) + " / fps " +
+                     approx(p.frame.fps) + " / dt " + approx(scene.integrator.dt) +
+                     ") is more than the limit of " + approx(kMaxRunSteps) +
+                     " steps in all; lower --speed");
+}
+
 }  // namespace
 
 RenderPlan plan_render(const SceneDesc& scene, const RenderOptions& o) {
@@ -95,6 +126,7 @@ RenderPlan plan_render(const SceneDesc& scene, const RenderOptions& o) {
   // Frame k shows tau = k * speed / fps, reached in a whole number of integrator steps: the
   // step is shrunk (never grown) so that every frame lands exactly on its time.
   p.tau_per_frame = p.frame.speed / p.frame.fps;
+  require_frame_budget(scene, p);
   p.substeps = std::max<std::int64_t>(
       1, static_cast<std::int64_t>(std::ceil(p.tau_per_frame / scene.integrator.dt - 1e-9)));
   p.dt = p.tau_per_frame / static_cast<double>(p.substeps);

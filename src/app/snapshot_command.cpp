@@ -18,6 +18,12 @@ namespace cb {
 
 namespace {
 
+// What an interrupted snapshot leaves: the PNGs written whole before it.
+std::string done_text(std::size_t written) {
+  return written == 0 ? std::string("nothing written")
+                      : std::to_string(written) + " PNG(s) written before it are complete";
+}
+
 std::vector<double> parse_times(const std::string& text) {
   std::vector<double> out;
   std::size_t start = 0;
@@ -93,8 +99,9 @@ int overlay_snapshots(const SnapshotOptions& o, const SceneDesc& scene,
   Overlay overlay(plan.frame.width, plan.frame.height, plan.frame.fps, plan.overlay);
   FrameSource source(scene, plan, 1);
   for (std::size_t i = 0; i < times.size(); ++i) {
-    if (g_interrupted) return 130;
+    if (g_interrupted) return interrupted_status(done_text(i));
     const std::optional<RenderSnapshot> snap = source.frame(frames[i]);
+    if (!snap && g_interrupted) return interrupted_status(done_text(i));
     if (!snap) {
       std::fprintf(stderr, "chainbreak: %s\n", source.error().c_str());
       return 1;
@@ -136,8 +143,9 @@ int snapshot_command(const SnapshotOptions& o) {
 
   // On-grid times (sorted) share one run; an off-grid time gets a run of its own.
   Integrator grid_run(scene.chain, make_forcing(scene.drive), {dt, 1});
-  for (double tau : times) {
-    if (g_interrupted) return 130;
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    const double tau = times[i];
+    if (g_interrupted) return interrupted_status(done_text(i));
     // The integrator lands exactly on tau: on the scene's grid when tau is a multiple of dt,
     // otherwise with the step shrunk to tau / ceil(tau / dt) (never larger than dt).
     const double steps = tau / dt;
@@ -148,7 +156,8 @@ int snapshot_command(const SnapshotOptions& o) {
     if (!on_grid)
       own_run.emplace(scene.chain, make_forcing(scene.drive), IntegratorOptions{step_dt, 1});
     Integrator& sim = on_grid ? grid_run : *own_run;
-    if (!sim.advance_to(count)) {
+    if (!advance_watching(sim, count)) {
+      if (g_interrupted) return interrupted_status(done_text(i));
       std::fprintf(stderr, "chainbreak: %s\n", sim.error().c_str());
       return 1;
     }

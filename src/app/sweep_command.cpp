@@ -13,6 +13,7 @@
 #include "figures/break_maps.h"
 #include "output/output_file.h"
 #include "physics/integrator.h"
+#include "resources/resources.h"
 
 namespace cb {
 
@@ -58,6 +59,11 @@ Vary parse_vary(const std::string& text) {
       !parse_double(parts[1], v.hi) || !parse_double(parts[2], count) || count < 1 ||
       count != std::floor(count) || (parts.size() == 4 && parts[3] != "log"))
     throw SceneError(usage);
+  // Checked as a double, before it becomes an int (1e12 would not fit).
+  if (count > kMaxSweepValues)
+    throw SceneError("--vary " + text + ": COUNT = " + std::string(parts[2]) +
+                     " values is more than the limit of " + std::to_string(kMaxSweepValues) +
+                     "; use fewer values, or split the range over several sweeps (--shard)");
   v.count = static_cast<int>(count);
   v.log = parts.size() == 4;
   if (v.log && (v.lo <= 0 || v.hi <= 0))
@@ -96,11 +102,14 @@ int sweep_command(const SweepOptions& o) {
   const Vary vary = parse_vary(o.vary);
   const auto [first, last] = parse_shard(o.shard, vary.count);
   // Validate the scene and every value before any work: a bad value fails now, not at row 300.
+  // The file is read once; each value is set in memory and checked by validate().
+  const SceneVariations variations(o.scene, o.overrides);
   std::vector<SceneDesc> scenes;
   for (int i = first; i < last; ++i) {
-    auto overrides = o.overrides;
-    overrides.push_back({vary.key, number_text(vary.value(i))});
-    scenes.push_back(load_scene(o.scene, overrides));
+    if (g_interrupted) return interrupted_status("no CSV written");
+    scenes.push_back(
+        variations.with(vary.key, vary.value(i),
+                        "--vary " + o.vary + " (value " + number_text(vary.value(i)) + ")"));
     if (o.solver == "exact" && scenes.back().drive.type == DriveType::Expr)
       throw SceneError(
           o.scene +
@@ -142,10 +151,7 @@ int sweep_command(const SweepOptions& o) {
     for (auto& t : pool) t.join();
     if (watcher.joinable()) watcher.join();
   }
-  if (g_interrupted) {
-    std::fprintf(stderr, "chainbreak: interrupted; no CSV written\n");
-    return 130;
-  }
+  if (g_interrupted) return interrupted_status("no CSV written");
   if (!failure.empty()) {
     std::fprintf(stderr, "chainbreak: %s\n", failure.c_str());
     return 1;

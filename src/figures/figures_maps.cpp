@@ -75,7 +75,7 @@ Figure figure_breaking_map(const FigureOptions& o) {
       DriveDesc ramp;
       ramp.type = DriveType::Ramp;
       ramp.beta = 1.0;
-      return simulated_first_break(chain, ramp, t_end, o.dt);
+      return simulated_first_break(chain, ramp, t_end, o.dt, o.stop);
     });
     std::vector<double> spring;
     for (const FirstBreak& b : runs) spring.push_back(spring_or_nan(b));
@@ -153,7 +153,7 @@ Figure figure_one_body_map(const FigureOptions& o) {
   const std::vector<double> coarse = logspace(kOneBodyBetaLo, kOneBodyBetaHi, o.map_rk4 * 2);
   const auto runs = parallel_first_breaks(static_cast<int>(coarse.size()), o.jobs, [&](int i) {
     const double b = coarse[static_cast<std::size_t>(i)];
-    return simulated_first_break(chain, ramp(b), 1.0 / b + 10.0, o.dt);
+    return simulated_first_break(chain, ramp(b), 1.0 / b + 10.0, o.dt, o.stop);
   });
   std::vector<double> rk4;
   for (const FirstBreak& b : runs) rk4.push_back(spring_or_nan(b));
