@@ -261,7 +261,8 @@ RunNeeds run_needs(const RunOptions& o, const SceneDesc& scene) {
     n.csv_rows = std::floor(static_cast<double>(planned_steps(scene)) / o.every) + 1;
     n.csv_bytes = n.csv_rows * csv_row_bytes(columns);
     // The header, and the buffer of rows flushed past 1 MB (CsvTable::row).
-    n.memory.needs.push_back({"CSV header and row buffer", 2 * csv_row_bytes(columns) + (1u << 20)});
+    n.memory.needs.push_back(
+        {"CSV header and row buffer", 2 * csv_row_bytes(columns) + (1u << 20)});
   }
   return n;
 }

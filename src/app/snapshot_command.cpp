@@ -13,6 +13,7 @@
 #include "output/png_writer.h"
 #include "overlay/overlay.h"
 #include "physics/integrator.h"
+#include "resources/resources.h"
 
 namespace cb {
 
@@ -131,6 +132,11 @@ void require_distinct_names(const std::string& scene, const std::vector<double>&
 
 int snapshot_command(const SnapshotOptions& o) {
   const SceneDesc scene = load_scene(o.scene, o.overrides);
+  // Two runs at most at once (the grid's and an off-grid time's, or the pre-pass), and a frame.
+  MemoryEstimate memory;
+  memory.needs.push_back({"RK4 state", 2 * rk4_bytes(scene.chain.beads)});
+  require_memory(memory, machine_memory(), "snapshot " + scene.name,
+                 "use fewer beads (chain.beads)");
   const std::vector<double> times = parse_times(o.at);
   require_distinct_names(scene.name, times);
   if (!o.overlay.empty() && o.overlay != "none") return overlay_snapshots(o, scene, times);

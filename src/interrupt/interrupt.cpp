@@ -41,8 +41,10 @@ const char* interrupt_signal_name() {
 }
 
 int interrupted_status(const std::string& what_is_left) {
-  std::fprintf(stderr, "chainbreak: interrupted by %s; %s\n", interrupt_signal_name(),
-               what_is_left.c_str());
+  // "interrupted after 12 frames; ..." reads on; anything else is a clause of its own.
+  const bool joins = what_is_left.rfind("after ", 0) == 0 || what_is_left.rfind("before ", 0) == 0;
+  std::fprintf(stderr, "chainbreak: interrupted%s%s (%s)\n", joins ? " " : "; ",
+               what_is_left.c_str(), interrupt_signal_name());
   return interrupt_status();
 }
 

@@ -25,7 +25,8 @@ int interrupt_status();
 // "SIGINT" or "SIGTERM".
 const char* interrupt_signal_name();
 
-// Prints "chainbreak: interrupted by SIGTERM; <what is left>" and returns interrupt_status().
+// Prints "chainbreak: interrupted after 12 frames; ... (SIGTERM)" (or "interrupted; <what is
+// left> (SIGINT)") and returns interrupt_status().
 int interrupted_status(const std::string& what_is_left);
 
 // Thrown by a phase that notices the flag where it cannot return a status itself.

@@ -128,7 +128,8 @@ void Checker::units() const {
       fail(key, key + " must be > 0 (in " + unit_of[i] + "), got " +
                     format_exact(positive[i].second) + "; write e.g. " + std::string(example(key)));
   }
-  if (!(u.friction >= 0.0) || !std::isfinite(u.friction))
+  // Unless given, friction is derived from chain.gamma, whose own check speaks for it.
+  if (given("units.friction") && (!(u.friction >= 0.0) || !std::isfinite(u.friction)))
     fail("units.friction", "units.friction must be >= 0 (in kg/s), got " +
                                format_exact(u.friction) + "; write e.g. friction = 0.0");
 }
