@@ -11,6 +11,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <random>
@@ -41,9 +42,14 @@ std::mt19937& random_source() {
   return gen;
 }
 
-// True once the process has a handler for SIGINT and SIGTERM (SigCgt of /proc/PID/status):
-// a signal before that would kill it by the default action, which says nothing about us.
+// True once the process runs chainbreak and has its handler for SIGINT and SIGTERM (SigCgt
+// of /proc/PID/status): a signal before that would kill it by the default action, which says
+// nothing about us. (Before execv the child still has this test runner's handlers: Catch2
+// installs its own.)
 bool handlers_installed(pid_t pid) {
+  std::error_code error;
+  const auto exe = std::filesystem::read_symlink("/proc/" + std::to_string(pid) + "/exe", error);
+  if (error || exe != std::filesystem::canonical(CHAINBREAK_EXE)) return false;
   std::ifstream in("/proc/" + std::to_string(pid) + "/status");
   for (std::string line; std::getline(in, line);)
     if (line.rfind("SigCgt:", 0) == 0) {
@@ -65,6 +71,7 @@ struct Outcome {
 // Runs chainbreak ARGS, waits `delay` seconds after its handler is in place, sends `signal`.
 Outcome interrupt(const std::vector<std::string>& args, double delay, int signal,
                   const std::string& err_path) {
+  std::fflush(nullptr);  // or the child would print this process's buffered output again
   const pid_t pid = ::fork();
   REQUIRE(pid >= 0);
   if (pid == 0) {
@@ -118,9 +125,13 @@ void check_interrupts(
     const Outcome o = interrupt(args(dir), d, signal, dir.file("stderr.txt"));
     INFO(what << ": " << (signal == SIGINT ? "SIGINT" : "SIGTERM") << " after " << d << " s");
     INFO("stderr: " << o.err);
-    std::fprintf(stderr, "  %s: %s after %.3f s: status %d, exited %.3f s after the signal\n",
+    // The command's own line says which phase the signal fell in.
+    const auto said = o.err.find("interrupted");
+    const std::string phase =
+        said == std::string::npos ? "" : o.err.substr(said, o.err.find('\n', said) - said);
+    std::fprintf(stderr, "  %s: %s after %.3f s: status %d, exited %.3f s after it: %s\n",
                  what.c_str(), signal == SIGINT ? "SIGINT" : "SIGTERM", d, o.status,
-                 o.seconds_after_signal);
+                 o.seconds_after_signal, phase.c_str());
     REQUIRE_FALSE(o.finished_first);  // the commands below run far longer than max_delay
     REQUIRE(o.exited);
     CHECK(o.status == 128 + signal);
@@ -148,9 +159,10 @@ TEST_CASE("interrupted run: 130/143 and no CSV", "[interrupt]") {
   check_interrupts(
       "run", 3, 1.5,
       [](const cb::test::TempDir& dir) {
-        return std::vector<std::string>{"run",    scene_file("step_pulse.toml"),
-                                        "--set",  "integrator.t_end=1e7",
-                                        "--csv",  dir.file("x.csv"),
+        return std::vector<std::string>{"run",     scene_file("step_pulse.toml"),
+                                        "--set",   "integrator.t_end=1e7",
+                                        "--csv",   dir.file("x.csv"),
+                                        "--every", "1000",
                                         "--quiet"};
       },
       [](const cb::test::TempDir&, const std::string&) { return false; });
