@@ -71,7 +71,9 @@ int figures_command(const FiguresOptions& o) {
       const Figure figure = entry.build(options);
       if (g_interrupted) return interrupted_status(left());  // the figure may be incomplete
       const std::filesystem::path stem = std::filesystem::path(o.out_dir) / entry.name;
-      write_png(stem.string() + ".png", figure_image(*canvas.renderer, drawer, figure));
+      const Image image = figure_image(*canvas.renderer, drawer, figure);
+      if (g_interrupted) return interrupted_status(left());
+      write_png(stem.string() + ".png", image);
       OutputFile csv(stem.string() + ".csv");
       csv.write(figure_csv(figure));
       csv.commit();

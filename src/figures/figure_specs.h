@@ -23,6 +23,11 @@ struct FigureOptions {
   const std::atomic<bool>* stop = nullptr;
 };
 
+// True once options.stop is set and true: a builder may then return what it has.
+inline bool stopped(const FigureOptions& o) {
+  return o.stop && o.stop->load(std::memory_order_relaxed);
+}
+
 struct FigureEntry {
   std::string name;  // fig3a ... fig5, breaking_map, one_body_map
   std::function<Figure(const FigureOptions&)> build;

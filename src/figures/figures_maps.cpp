@@ -65,6 +65,7 @@ Figure figure_breaking_map(const FigureOptions& o) {
       exact_spring.push_back(spring_or_nan(b));
     p.series.push_back(make_series(std::string("exact ") + c.name, SeriesStyle::Line, c.colour,
                                    zeta, std::move(exact_spring)));
+    if (stopped(o)) return f;  // each exact map is seconds of work: look between them
   }
   for (const auto& c : cases) {
     const auto runs = parallel_first_breaks(static_cast<int>(coarse.size()), o.jobs, [&](int i) {
@@ -89,6 +90,7 @@ Figure figure_breaking_map(const FigureOptions& o) {
     Series switches =
         make_series(std::string("exact N / not-N switch ") + c.name, SeriesStyle::Points,
                     c.gamma == 0.0 ? kFigVermillion : c.colour, {}, {});
+    if (stopped(o)) return f;
     for (const MapBoundary& b : spring_n_boundaries(kN, c.gamma, 0.5, kMapZetaMax, 250)) {
       switches.x.push_back(b.zeta);
       switches.y.push_back(row);
