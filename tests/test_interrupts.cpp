@@ -68,9 +68,10 @@ struct Outcome {
   std::string err;
 };
 
-// Runs chainbreak ARGS, waits `delay` seconds after its handler is in place, sends `signal`.
+// Runs chainbreak ARGS, waits `delay` seconds after its handler is in place (and, when
+// `marker` is not empty, after its stderr shows it), sends `signal`.
 Outcome interrupt(const std::vector<std::string>& args, double delay, int signal,
-                  const std::string& err_path) {
+                  const std::string& err_path, const std::string& marker) {
   std::fflush(nullptr);  // or the child would print this process's buffered output again
   const pid_t pid = ::fork();
   REQUIRE(pid >= 0);
@@ -89,6 +90,11 @@ Outcome interrupt(const std::vector<std::string>& args, double delay, int signal
   while (!handlers_installed(pid) && clock_type::now() < give_up) {
     if (::waitpid(pid, &raw, WNOHANG) == pid) break;
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  while (!marker.empty() && cb::test::slurp(err_path).find(marker) == std::string::npos &&
+         clock_type::now() < give_up + std::chrono::seconds(40)) {
+    if (::waitpid(pid, &raw, WNOHANG) == pid) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   std::this_thread::sleep_for(std::chrono::duration<double>(delay));
   if (::waitpid(pid, &raw, WNOHANG) == pid) {
@@ -116,13 +122,14 @@ Outcome interrupt(const std::vector<std::string>& args, double delay, int signal
 void check_interrupts(
     const std::string& what, int tries, double max_delay,
     const std::function<std::vector<std::string>(const cb::test::TempDir&)>& args,
-    const std::function<bool(const cb::test::TempDir&, const std::string&)>& allowed) {
+    const std::function<bool(const cb::test::TempDir&, const std::string&)>& allowed,
+    const std::string& marker = "") {
   std::uniform_real_distribution<double> delay(0.0, max_delay);
   for (int i = 0; i < tries; ++i) {
     cb::test::TempDir dir("chainbreak-intr");
     const double d = delay(random_source());
     const int signal = random_source()() % 2 ? SIGTERM : SIGINT;
-    const Outcome o = interrupt(args(dir), d, signal, dir.file("stderr.txt"));
+    const Outcome o = interrupt(args(dir), d, signal, dir.file("stderr.txt"), marker);
     INFO(what << ": " << (signal == SIGINT ? "SIGINT" : "SIGTERM") << " after " << d << " s");
     INFO("stderr: " << o.err);
     // The command's own line says which phase the signal fell in.
@@ -202,21 +209,29 @@ TEST_CASE("interrupted figures: 130/143 and only whole figures", "[interrupt]") 
 
 TEST_CASE("interrupted render, planning included: 130/143 and at most a .partial video",
           "[interrupt]") {
-  // A long pre-pass (1e7 steps of 300 beads, a few seconds) then 4501 frames at 854x480: the
-  // random point falls in planning, the pre-pass or the rendering.
+  // A long pre-pass (3e6 steps of 300 beads: seconds) then 4501 frames at 854x480.
+  const auto args = [](const cb::test::TempDir& dir, bool quiet) {
+    std::vector<std::string> a{"render", scene_file("anomalous_breaking.toml"),
+                               "-o",     dir.file("v.mp4"),
+                               "-q",     "l",
+                               "--set",  "chain.threshold=1e9",
+                               "--set",  "chain.beads=300",
+                               "--set",  "integrator.t_end=3000",
+                               "--set",  "integrator.dt=0.001"};
+    if (quiet) a.push_back("--quiet");
+    return a;
+  };
+  const auto allowed = [](const cb::test::TempDir&, const std::string& name) {
+    return name == "v.partial.mp4";
+  };
+  // In planning and the pre-pass (the first second)...
   check_interrupts(
-      "render", 4, 4.0,
-      [](const cb::test::TempDir& dir) {
-        return std::vector<std::string>{"render", scene_file("anomalous_breaking.toml"),
-                                        "-o",     dir.file("v.mp4"),
-                                        "-q",     "l",
-                                        "--set",  "chain.threshold=1e9",
-                                        "--set",  "chain.beads=300",
-                                        "--set",  "integrator.t_end=3000",
-                                        "--set",  "integrator.dt=0.001",
-                                        "--quiet"};
-      },
-      [](const cb::test::TempDir&, const std::string& name) { return name == "v.partial.mp4"; });
+      "render (planning)", 2, 1.0, [&](const cb::test::TempDir& dir) { return args(dir, true); },
+      allowed);
+  // ...and while frames are drawn and encoded: the plan line on stderr says they have begun.
+  check_interrupts(
+      "render (frames)", 2, 1.5, [&](const cb::test::TempDir& dir) { return args(dir, false); },
+      allowed, " frames ");
 }
 
 TEST_CASE("interrupted snapshot: 130/143 and only whole PNGs", "[interrupt]") {
