@@ -148,6 +148,7 @@ TEST_CASE("SIGINT stops a run with status 130 and no CSV", "[cli]") {
   }
   // Long enough to be integrating, far from done (1e9 steps). A row every 1000 steps: every
   // step's row would be ~875 GB, which the disk guard refuses (issue #12).
+  cb::test::wait_for_signal_handlers(pid);  // a loaded machine may take a while to get there
   ::usleep(500 * 1000);
   ::kill(pid, SIGINT);
   int raw = 0;

@@ -42,24 +42,6 @@ std::mt19937& random_source() {
   return gen;
 }
 
-// True once the process runs chainbreak and has its handler for SIGINT and SIGTERM (SigCgt
-// of /proc/PID/status): a signal before that would kill it by the default action, which says
-// nothing about us. (Before execv the child still has this test runner's handlers: Catch2
-// installs its own.)
-bool handlers_installed(pid_t pid) {
-  std::error_code error;
-  const auto exe = std::filesystem::read_symlink("/proc/" + std::to_string(pid) + "/exe", error);
-  if (error || exe != std::filesystem::canonical(CHAINBREAK_EXE)) return false;
-  std::ifstream in("/proc/" + std::to_string(pid) + "/status");
-  for (std::string line; std::getline(in, line);)
-    if (line.rfind("SigCgt:", 0) == 0) {
-      const unsigned long long mask = std::stoull(line.substr(7), nullptr, 16);
-      const unsigned long long want = (1ull << (SIGINT - 1)) | (1ull << (SIGTERM - 1));
-      return (mask & want) == want;
-    }
-  return false;
-}
-
 struct Outcome {
   bool exited = false;
   int status = -1;
@@ -87,10 +69,8 @@ Outcome interrupt(const std::vector<std::string>& args, double delay, int signal
   Outcome o;
   int raw = 0;
   const auto give_up = clock_type::now() + std::chrono::seconds(20);
-  while (!handlers_installed(pid) && clock_type::now() < give_up) {
-    if (::waitpid(pid, &raw, WNOHANG) == pid) break;
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-  }
+
+  cb::test::wait_for_signal_handlers(pid);
   while (!marker.empty() && cb::test::slurp(err_path).find(marker) == std::string::npos &&
          clock_type::now() < give_up + std::chrono::seconds(40)) {
     if (::waitpid(pid, &raw, WNOHANG) == pid) break;

@@ -61,7 +61,7 @@ Figure figure_breaking_map(const FigureOptions& o) {
   } cases[2] = {{0.0, kFigOrange, "\u03B3 = 0"}, {0.01, kFigSkyBlue, "\u03B3 = 0.01"}};
   for (const auto& c : cases) {
     std::vector<double> exact_spring;
-    for (const FirstBreak& b : breaking_map(kN, c.gamma, BreakMode::Abs, zeta, t_end))
+    for (const FirstBreak& b : breaking_map(kN, c.gamma, BreakMode::Abs, zeta, t_end, o.stop))
       exact_spring.push_back(spring_or_nan(b));
     p.series.push_back(make_series(std::string("exact ") + c.name, SeriesStyle::Line, c.colour,
                                    zeta, std::move(exact_spring)));
