@@ -1,6 +1,7 @@
 // The command-line commands. Each returns the process exit status:
 // 0 success, 1 a run that failed (non-finite state, write error), 2 a user error in the
-// scene or the options, 130 interrupted (SIGINT/SIGTERM).
+// scene or the options (or a request past a resource limit), 130 interrupted by SIGINT,
+// 143 by SIGTERM (interrupt/interrupt.h).
 #pragma once
 
 #include <atomic>
@@ -8,11 +9,10 @@
 #include <vector>
 
 #include "app/frames.h"
+#include "interrupt/interrupt.h"
 #include "scene/scene.h"
 
 namespace cb {
-
-extern std::atomic<bool> g_interrupted;  // set by the signal handler; long loops poll it
 
 struct RunOptions {
   std::string scene;
@@ -23,6 +23,7 @@ struct RunOptions {
   bool psi = false;
   bool quiet = false;
   int threads = 1;
+  bool dry_run = false;  // print the plan and the resource estimate; run nothing
 };
 int run_command(const RunOptions& options);
 

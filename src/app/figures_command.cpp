@@ -78,6 +78,7 @@ int figures_command(const FiguresOptions& o) {
   make_output_dir(o.out_dir);
   FigureOptions options;
   options.jobs = o.jobs;
+  options.stop = &g_interrupted;
   const auto start = std::chrono::steady_clock::now();
   int done = 0;
   const int total =
@@ -86,14 +87,18 @@ int figures_command(const FiguresOptions& o) {
     Progress progress("figures", total, o.quiet, "figures");
     for (const FigureEntry& entry : figure_entries()) {
       if (!only.empty() && !only.count(entry.name)) continue;
-      if (g_interrupted) {
-        std::fprintf(stderr, "chainbreak: interrupted after %d of %d figures\n", done, total);
-        return 130;
-      }
+      const auto left = [&] {
+        return "after " + std::to_string(done) + " of " + std::to_string(total) +
+               " figures (their PNG and CSV are complete)";
+      };
+      if (g_interrupted) return interrupted_status(left());
       const Figure figure = entry.build(options);
+      if (g_interrupted) return interrupted_status(left());  // the figure may be incomplete
       const std::filesystem::path stem = std::filesystem::path(o.out_dir) / entry.name;
-      for (FigureFormat format : *formats)
+      for (FigureFormat format : *formats) {
         std::printf("%s\n", write_figure(figure, theme, format, stem).c_str());
+        if (g_interrupted) return interrupted_status(left());
+      }
       OutputFile csv(stem.string() + ".csv");
       csv.write(figure_csv(figure));
       csv.commit();

@@ -17,8 +17,7 @@ FrameSource::FrameSource(const SceneDesc& scene, const RenderPlan& plan, int thr
 
 bool FrameSource::record_through(std::int64_t k) {
   for (; next_ <= k; ++next_) {
-    const StopRule frame_step{plan_.grid.step(next_), std::nullopt, false, nullptr};
-    if (run_until(sim_, frame_step) == RunEnd::Failed) return false;
+    if (!advance_watching(sim_, plan_.grid.step(next_))) return false;
     if (history_) history_->record(next_, sim_.state(), sim_.force_now());
     camera_.frame(sim_.state(), zoom_first_, zoom_last_);  // every frame: the camera is smooth
   }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "interrupt/interrupt.h"
 #include "overlay/overlay_history.h"
 #include "physics/energy.h"
 #include "physics/integrator.h"
@@ -41,8 +42,8 @@ RenderDesc frame_settings(const SceneDesc& scene, const FrameOptions& o) {
   if (!o.size.empty()) {
     int w = 0, h = 0;
     char tail = 0;
-    if (std::sscanf(o.size.c_str(), "%dx%d%c", &w, &h, &tail) != 2 || w < 16 || h < 16 ||
-        w > 16384 || h > 16384)
+    if (std::sscanf(o.size.c_str(), "%dx%d%c", &w, &h, &tail) != 2 || w < kMinFrameSide ||
+        h < kMinFrameSide || w > kMaxFrameSide || h > kMaxFrameSide)
       throw SceneError("--size " + o.size +
                        ": expected WIDTHxHEIGHT in pixels, 16..16384, e.g. 1920x1080");
     d.width = w;
@@ -89,7 +90,7 @@ RunExtent measure_run(const SceneDesc& scene, double tau_stop, double dt,
   double psi = 0.0, force = 0.0, strain = 0.0;
   const auto last = static_cast<std::int64_t>(std::llround(tau_stop / dt));
   // Nothing is measured after the first break, so the pre-pass ends there.
-  const StopRule stop{last, std::nullopt, true, nullptr};
+  const StopRule stop{last, std::nullopt, true, &g_interrupted};
   const Observer watch{
       1, false, [&](const Integrator& s) {
         if (sample_every > 0 && s.state().breaks.empty() && s.state().step % sample_every == 0)
@@ -101,14 +102,18 @@ RunExtent measure_run(const SceneDesc& scene, double tau_stop, double dt,
         }
         force = std::max(force, std::abs(s.force_now()));
       }};
-  if (run_until(sim, stop, {watch}) == RunEnd::Failed) throw std::runtime_error(sim.error());
+  const RunEnd end = run_until(sim, stop, {watch});
+  if (end == RunEnd::Failed) throw std::runtime_error(sim.error());
+  if (end == RunEnd::Cancelled) throw Interrupted();  // the pre-pass of a long run takes a while
   if (!sim.state().breaks.empty() && scene.integrator.after_break)
     e.tau_stop = std::min(tau_stop, sim.state().breaks.front().tau + *scene.integrator.after_break);
   if (every_break && !sim.state().breaks.empty()) {
     // Slow motion needs every break the video shows: on to where the video stops.
     const StopRule rest{static_cast<std::int64_t>(std::floor(e.tau_stop / dt + 1e-9)), std::nullopt,
-                        false, nullptr};
-    if (run_until(sim, rest) == RunEnd::Failed) throw std::runtime_error(sim.error());
+                        false, &g_interrupted};
+    const RunEnd rest_end = run_until(sim, rest);
+    if (rest_end == RunEnd::Failed) throw std::runtime_error(sim.error());
+    if (rest_end == RunEnd::Cancelled) throw Interrupted();
   }
   for (const BreakEvent& b : sim.state().breaks)
     if (b.tau <= e.tau_stop) e.breaks.push_back(b);
@@ -116,6 +121,11 @@ RunExtent measure_run(const SceneDesc& scene, double tau_stop, double dt,
   e.force_range = std::max(force, 1e-6);
   e.strain_range = std::max(strain, 1e-6);
   return e;
+}
+
+bool advance_watching(Integrator& sim, std::int64_t target_step) {
+  const StopRule rule{target_step, std::nullopt, false, &g_interrupted};
+  return run_until(sim, rule) == RunEnd::Reached;
 }
 
 SnapshotStyle snapshot_style(const SceneDesc& scene, const RenderDesc& frame,

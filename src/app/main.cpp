@@ -1,7 +1,7 @@
 // chainbreak: which part of a chain breaks (S. K. Baek). The command line.
 #include <CLI/CLI.hpp>
-#include <csignal>
 #include <cstdio>
+#include <limits>
 
 #include "app/commands.h"
 #include "cluster/grid.h"
@@ -10,21 +10,30 @@
 #include "gl/gl_context.h"
 #include "output/output_file.h"
 #include "physics/simd.h"
-
-namespace cb {
-std::atomic<bool> g_interrupted{false};
-}
+#include "resources/resources.h"
 
 namespace {
-
-void on_signal(int) {
-  cb::g_interrupted = true;
-}
 
 // A mistake the user can fix (scene, options, output path): the message and status 2.
 int user_error(const char* message, const char* prefix) {
   std::fprintf(stderr, "%s%s\n", prefix, message);
   return 2;
+}
+
+// A count such as --every K: CLI11's own range checks print their bounds as doubles
+// ("0.000000 to 1797693134862315708..."), so this one says K >= 1 in words.
+CLI::Validator whole_number_at_least_1(const std::string& name) {
+  return CLI::Validator(
+      [name](std::string& text) -> std::string {
+        long long v = 0;
+        char tail = 0;
+        if (std::sscanf(text.c_str(), "%lld%c", &v, &tail) != 1 || v < 1 ||
+            v > std::numeric_limits<int>::max())
+          return "expected a whole number " + name + " >= 1 (at most " +
+                 std::to_string(std::numeric_limits<int>::max()) + "), got '" + text + "'";
+        return {};
+      },
+      name + " >= 1");
 }
 
 std::vector<cb::Override> parse_overrides(const std::vector<std::string>& sets) {
@@ -36,8 +45,7 @@ std::vector<cb::Override> parse_overrides(const std::vector<std::string>& sets) 
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::signal(SIGINT, on_signal);
-  std::signal(SIGTERM, on_signal);
+  cb::install_interrupt_handler();
 
   CLI::App app{"chainbreak: a harmonic chain pulled at one end, and which spring breaks first"};
   app.require_subcommand(1);
@@ -54,8 +62,11 @@ int main(int argc, char** argv) {
                    "rk4 (with breaking), exact or continuum (formulas, no breaking)")
       ->check(CLI::IsMember({"rk4", "exact", "continuum"}));
   run_cmd->add_option("--csv", run.csv, "Write tau,f,energy,kinetic,potential,phi_1..phi_N here");
-  run_cmd->add_option("--every", run.every, "One CSV row every K steps")
-      ->check(CLI::PositiveNumber);
+  run_cmd->add_option("--every", run.every, "One CSV row every K steps (K >= 1)")
+      ->check(whole_number_at_least_1("K"));
+  run_cmd->add_flag("--dry-run", run.dry_run,
+                    "Check the scene and the output; print the plan and the memory, CSV rows "
+                    "and bytes it needs; run nothing");
   run_cmd->add_flag("--psi", run.psi, "Add psi_1..psi_N columns to the CSV");
   run_cmd->add_option("--threads", run.threads, "Threads for the integrator (helps from N ~ 10^5)")
       ->check(CLI::Range(1, 256));
@@ -243,8 +254,12 @@ int main(int argc, char** argv) {
       if (opt == values_opt) sweep.axes.push_back("--values " + values.at(next_values++));
     }
     return cb::sweep_command(sweep);
+  } catch (const cb::Interrupted&) {
+    return cb::interrupted_status("nothing written");
   } catch (const cb::SceneError& e) {
     return user_error(e.what(), "");
+  } catch (const cb::ResourceError& e) {
+    return user_error(e.what(), "chainbreak: ");
   } catch (const cb::DriveError& e) {
     return user_error(e.what(), "");
   } catch (const cb::GridError& e) {
@@ -254,6 +269,8 @@ int main(int argc, char** argv) {
   } catch (const cb::OutputError& e) {
     return user_error(e.what(), "chainbreak: ");
   } catch (const cb::SimdChoiceError& e) {
+    return user_error(e.what(), "chainbreak: ");
+  } catch (const cb::GlOptionError& e) {
     return user_error(e.what(), "chainbreak: ");
   } catch (const cb::GlError& e) {
     std::fprintf(stderr, "chainbreak: %s\n", e.what());

@@ -23,6 +23,7 @@
 #include "output/output_file.h"
 #include "output/video_encoder.h"
 #include "overlay/overlay.h"
+#include "resources/resources.h"
 
 namespace cb {
 
@@ -40,7 +41,7 @@ struct Producer {
     for (std::int64_t k = 0; k < frames && !g_interrupted; ++k) {
       std::optional<RenderSnapshot> snap = runs.frame(k);
       if (!snap) {
-        error = runs.error();
+        if (!g_interrupted) error = runs.error();
         break;
       }
       if (!queue.push(std::move(*snap))) break;
@@ -61,6 +62,18 @@ std::unique_ptr<FrameSink> open_sink(const RenderOptions& o, const SceneDesc& sc
   return std::make_unique<VideoEncoder>(plan.output, v);
 }
 
+// Frames in flight: the snapshot queue (3) and the sink's pictures (read back, converting,
+// encoding: at most 8 of them at once), each w x h x 4 bytes; and the physics.
+MemoryEstimate render_memory(const SceneDesc& scene, const RenderPlan& plan) {
+  const double beads = scene.chain.beads;
+  const double frame_bytes = 4.0 * plan.frame.width * plan.frame.height;
+  MemoryEstimate m;
+  m.needs.push_back({"RK4 state", 2 * rk4_bytes(beads)});  // the pre-pass and the render
+  m.needs.push_back({"frames in flight", 8 * frame_bytes});
+  m.needs.push_back({"snapshots in flight", 3 * 64 * beads});
+  return m;
+}
+
 }  // namespace
 
 int render_command(const RenderOptions& o) {
@@ -68,9 +81,14 @@ int render_command(const RenderOptions& o) {
   // The same --set applies to every scene of a side-by-side video.
   for (const std::string& path : o.scenes.empty() ? std::vector<std::string>{o.scene} : o.scenes)
     scenes.push_back(load_scene(path, o.overrides));
-  RunSet runs(scenes, o);
+  choose_gl_backend(o.frame.gl);  // a misspelled backend fails now, not after the pre-pass
+  RunSet runs(scenes, o);  // each plan refuses too many frames before any work
   const SceneDesc& scene = runs.scene(0);
   const RenderPlan& plan = runs.plan();
+  const MachineMemory machine = machine_memory();
+  const MemoryEstimate memory = render_memory(scene, plan);
+  require_memory(memory, machine, "render " + scene.name,
+                 "use fewer beads (chain.beads) or a smaller frame (--size, -q l)");
   // The default folder is made on demand; a dry run only checks it could be.
   const bool default_folder = o.output.empty() && o.frames_dir.empty();
   if (default_folder && !std::filesystem::exists("renders")) {
@@ -86,7 +104,11 @@ int render_command(const RenderOptions& o) {
     sink = open_sink(o, scene, plan);
   runs.measure();
   if (o.dry_run) {
-    std::printf("%s\n", runs.json("").c_str());
+    std::string json = runs.json("");
+    json.pop_back();  // the closing brace: the estimate joins the plan
+    std::printf("%s,\"memory\":%s,\"memory_available_bytes\":%.0f,\"memory_source\":\"%s\"}\n",
+                json.c_str(), memory.json().c_str(), machine.available_bytes,
+                machine.source.c_str());
     return 0;  // the sink's destructor removes its temporary file
   }
   Canvas canvas = make_canvas(o.frame, plan.frame.width, plan.frame.height);
@@ -147,17 +169,16 @@ int render_command(const RenderOptions& o) {
     if (video) {
       const std::string partial = video->abort_partial();
       if (partial.empty())
-        std::fprintf(stderr, "chainbreak: interrupted before the first frame; nothing written\n");
+        interrupted_status("before the first frame; nothing written");
       else
-        std::fprintf(stderr,
-                     "chainbreak: interrupted after %lld frames; what was rendered plays as %s\n",
-                     static_cast<long long>(done), partial.c_str());
+        interrupted_status("after " + std::to_string(done) +
+                           " frames; what was rendered plays as " + partial);
     } else {
       sink->finish();
-      std::fprintf(stderr, "chainbreak: interrupted after %lld frames (complete PNGs kept in %s)\n",
-                   static_cast<long long>(done), o.frames_dir.c_str());
+      interrupted_status("after " + std::to_string(done) + " frames (complete PNGs kept in " +
+                         o.frames_dir + ")");
     }
-    return 130;
+    return interrupt_status();
   }
   sink->finish();
   OutputFile sidecar(sidecar_path(scene, plan));

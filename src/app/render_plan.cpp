@@ -10,6 +10,7 @@
 #include "output/video_encoder.h"
 #include "scene/scene_hash.h"
 #include "physics/simd.h"
+#include "resources/resources.h"
 
 namespace cb {
 
@@ -64,6 +65,38 @@ OverlaySwitches overlay_switches(const RenderDesc& r, const RenderOptions& o) {
   return s;
 }
 
+// Counted in double before any integer holds them (issue #12, rows 5 and 6: --speed 1e-300
+// made the frame count overflow; --speed 1e-6 planned billions of frames and hung in the
+// pre-pass). The frames of the whole run (an after_break stop can only shorten it), and the
+// integrator steps of one frame, which must fit the step counter.
+// A count or a rate in 4 digits: the estimates above are not exact to the last frame.
+std::string approx(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
+}
+
+// Counted in double before any integer holds them (at the normal pace: slow motion adds a
+// few windows' worth).
+void require_frame_budget(const SceneDesc& scene, const RenderPlan& p, double tau_per_frame) {
+  const double t_end = scene.integrator.t_end;
+  const double frames = std::floor(t_end / tau_per_frame + 1e-9) + 1;
+  if (!(frames <= kMaxFrames))
+    throw SceneError("render: " + approx(frames) + " frames (t_end = " + approx(t_end) + " at " +
+                     approx(tau_per_frame) + " tau a frame: speed " + approx(p.frame.speed) +
+                     " / fps " + approx(p.frame.fps) + ") is more than the limit of " +
+                     approx(kMaxFrames) + " frames; raise --speed (e.g. --speed " +
+                     approx(std::ceil(t_end * p.frame.fps / kMaxFrames * 10)) +
+                     "), lower --fps, or shorten integrator.t_end");
+  const double substeps = tau_per_frame / scene.integrator.dt;
+  if (!(substeps * frames <= kMaxRunSteps))
+    throw SceneError("render: " + approx(std::ceil(substeps)) +
+                     " integrator steps a frame (speed " + approx(p.frame.speed) + " / fps " +
+                     approx(p.frame.fps) + " / dt " + approx(scene.integrator.dt) +
+                     ") is more than the limit of " + approx(kMaxRunSteps) +
+                     " steps in all; lower --speed");
+}
+
 }  // namespace
 
 RenderPlan plan_render(const SceneDesc& scene, const RenderOptions& o) {
@@ -92,6 +125,7 @@ RenderPlan plan_render(const SceneDesc& scene, const RenderOptions& o) {
                      ": expected a factor between 0 and 1, e.g. --slowmo 0.1 (a tenth of the speed)");
   p.frame.slowmo = slow.factor;
   p.frame.slowmo_window = slow.window;
+  require_frame_budget(scene, p, p.frame.speed / p.frame.fps);
   p.grid = FrameGrid(p.frame.speed / p.frame.fps, scene.integrator.dt, slow);
   if (o.title_card >= 0) p.frame.title_card = o.title_card;
   p.overlay = overlay_switches(p.frame, o);

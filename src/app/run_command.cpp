@@ -1,6 +1,7 @@
 // `chainbreak run`: one scene, one solver, a CSV of the chain over time and a JSON summary.
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <optional>
 
@@ -14,6 +15,7 @@
 #include "physics/energy.h"
 #include "physics/integrator.h"
 #include "physics/run_loop.h"
+#include "resources/resources.h"
 
 namespace cb {
 
@@ -168,9 +170,8 @@ int run_rk4(const RunOptions& o, const SceneDesc& scene, CsvTable* csv) {
     case RunEnd::Reached:
       break;
     case RunEnd::Cancelled:
-      std::fprintf(stderr, "chainbreak: interrupted at tau = %g; no CSV written\n",
-                   sim.state().tau);
-      return 130;
+      return interrupted_status("stopped at tau = " + number_text(sim.state().tau) +
+                                "; no CSV written");
     case RunEnd::Failed:
       std::fprintf(stderr, "chainbreak: %s\n", sim.error().c_str());
       return 1;
@@ -212,7 +213,7 @@ int run_formula(const RunOptions& o, const SceneDesc& scene, CsvTable* csv) {
   };
   Progress progress("run " + scene.name, static_cast<double>(last), o.quiet);
   for (std::int64_t step = 0; csv && step <= last; step += o.every) {
-    if (g_interrupted) return 130;
+    if (g_interrupted) return interrupted_status("no CSV written");
     s.tau = static_cast<double>(step) * dt;
     s.f = f(s.tau);
     if (exact) {
@@ -240,15 +241,85 @@ int run_formula(const RunOptions& o, const SceneDesc& scene, CsvTable* csv) {
   return finish(o, scene, r, first);
 }
 
+// What the run will hold in memory and write, before any of it is allocated (rows 1-2 of
+// issue #12: a billion beads used to grow until the kernel killed the process).
+struct RunNeeds {
+  MemoryEstimate memory;
+  double csv_rows = 0, csv_bytes = 0;
+};
+
+RunNeeds run_needs(const RunOptions& o, const SceneDesc& scene) {
+  RunNeeds n;
+  const double beads = scene.chain.beads;
+  if (o.solver == "rk4") {
+    n.memory.needs.push_back({"RK4 state", rk4_bytes(beads)});
+  } else {
+    // A row's psi, velocity and phi, and the continuum's two neighbours in time.
+    n.memory.needs.push_back({"solver rows", 6 * 8 * beads});
+    if (o.solver == "exact") n.memory.needs.push_back({"exact tables", exact_table_bytes(beads)});
+  }
+  if (!o.csv.empty()) {
+    const double columns = 5 + beads * (o.psi ? 2 : 1);
+    n.csv_rows = std::floor(static_cast<double>(planned_steps(scene)) / o.every) + 1;
+    n.csv_bytes = n.csv_rows * csv_row_bytes(columns);
+    // The header, and the buffer of rows flushed past 1 MB (CsvTable::row).
+    n.memory.needs.push_back(
+        {"CSV header and row buffer", 2 * csv_row_bytes(columns) + (1u << 20)});
+  }
+  return n;
+}
+
+std::string run_plan_json(const RunOptions& o, const SceneDesc& scene, const RunNeeds& n,
+                          const MachineMemory& machine) {
+  std::string j = "{\"scene\":" + json_string(scene.name) + ",\"solver\":" + json_string(o.solver);
+  j += ",\"beads\":" + std::to_string(scene.chain.beads) +
+       ",\"steps\":" + std::to_string(planned_steps(scene));
+  j += ",\"csv\":" + (o.csv.empty() ? std::string("null") : json_string(o.csv));
+  j += ",\"csv_rows\":" + number_text(n.csv_rows) +
+       ",\"csv_bytes\":" + number_text(std::ceil(n.csv_bytes));
+  j += ",\"memory\":" + n.memory.json();
+  j += ",\"memory_available_bytes\":" + number_text(machine.available_bytes) +
+       ",\"memory_source\":" + json_string(machine.source) + "}";
+  return j;
+}
+
+// The CSV must fit on its disk: an estimate (at most 25 bytes a number) against the free
+// space of the folder it goes to.
+void require_disk(const RunOptions& o, const RunNeeds& n) {
+  if (o.csv.empty()) return;
+  std::error_code error;
+  const auto dir = std::filesystem::absolute(o.csv, error).parent_path();
+  const auto space = std::filesystem::space(dir, error);
+  if (error || static_cast<double>(space.available) >= n.csv_bytes) return;
+  throw ResourceError(
+      "run: the CSV " + o.csv + " would take up to about " + format_bytes(n.csv_bytes) + " (" +
+      number_text(n.csv_rows) + " rows), more than the " +
+      format_bytes(static_cast<double>(space.available)) + " free in " + dir.string() +
+      "; write fewer rows (--every K), a shorter run (t_end), or " + "write elsewhere");
+}
+
 }  // namespace
 
 int run_command(const RunOptions& o) {
   const SceneDesc scene = load_scene(o.scene, o.overrides);
-  if (o.every < 1) throw SceneError("--every " + std::to_string(o.every) + ": must be 1 or more");
+  if (o.every < 1)
+    throw SceneError("--every " + std::to_string(o.every) +
+                     ": one CSV row every K steps needs K >= 1");
   if (o.solver == "continuum" && scene.drive.type == DriveType::Impulses)
     throw SceneError(scene.path +
                      ": the continuum formula Eq. (sum) needs a drive with values; impulses are "
                      "delta functions. Use --solver exact or rk4");
+  const RunNeeds needs = run_needs(o, scene);
+  const MachineMemory machine = machine_memory();
+  require_memory(needs.memory, machine, "run " + scene.name,
+                 "use fewer beads (chain.beads)" +
+                     std::string(o.solver == "exact" ? ", or --solver rk4 (no N x N tables)" : ""));
+  require_disk(o, needs);
+  if (o.dry_run) {
+    if (!o.csv.empty()) check_output_path(o.csv, "out.csv");
+    std::printf("%s\n", run_plan_json(o, scene, needs, machine).c_str());
+    return 0;
+  }
   std::unique_ptr<CsvTable> csv;
   if (!o.csv.empty()) csv = std::make_unique<CsvTable>(o.csv, scene.chain.beads, o.psi);
   if (o.solver == "rk4") return run_rk4(o, scene, csv.get());

@@ -14,10 +14,17 @@
 #include "output/png_writer.h"
 #include "overlay/overlay.h"
 #include "physics/integrator.h"
+#include "resources/resources.h"
 
 namespace cb {
 
 namespace {
+
+// What an interrupted snapshot leaves: the PNGs written whole before it.
+std::string done_text(std::size_t written) {
+  return written == 0 ? std::string("nothing written")
+                      : std::to_string(written) + " PNG(s) written before it are complete";
+}
 
 std::vector<double> parse_times(const std::string& text) {
   std::vector<double> out;
@@ -99,8 +106,9 @@ int overlay_snapshots(const SnapshotOptions& o, const SceneDesc& scene,
                   plan.style.theme);
   FrameSource source(scene, plan, 1);
   for (std::size_t i = 0; i < times.size(); ++i) {
-    if (g_interrupted) return 130;
+    if (g_interrupted) return interrupted_status(done_text(i));
     const std::optional<RenderSnapshot> snap = source.frame(frames[i]);
+    if (!snap && g_interrupted) return interrupted_status(done_text(i));
     if (!snap) {
       std::fprintf(stderr, "chainbreak: %s\n", source.error().c_str());
       return 1;
@@ -130,6 +138,11 @@ void require_distinct_names(const std::string& scene, const std::vector<double>&
 
 int snapshot_command(const SnapshotOptions& o) {
   const SceneDesc scene = load_scene(o.scene, o.overrides);
+  // Two runs at most at once (the grid's and an off-grid time's, or the pre-pass), and a frame.
+  MemoryEstimate memory;
+  memory.needs.push_back({"RK4 state", 2 * rk4_bytes(scene.chain.beads)});
+  require_memory(memory, machine_memory(), "snapshot " + scene.name,
+                 "use fewer beads (chain.beads)");
   const std::vector<double> times = parse_times(o.at);
   require_distinct_names(scene.name, times);
   if (!o.overlay.empty() && o.overlay != "none") return overlay_snapshots(o, scene, times);
@@ -142,8 +155,9 @@ int snapshot_command(const SnapshotOptions& o) {
 
   // On-grid times (sorted) share one run; an off-grid time gets a run of its own.
   Integrator grid_run(scene.chain, make_forcing(scene.drive), {dt, 1});
-  for (double tau : times) {
-    if (g_interrupted) return 130;
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    const double tau = times[i];
+    if (g_interrupted) return interrupted_status(done_text(i));
     // The integrator lands exactly on tau: on the scene's grid when tau is a multiple of dt,
     // otherwise with the step shrunk to tau / ceil(tau / dt) (never larger than dt).
     const double steps = tau / dt;
@@ -154,7 +168,8 @@ int snapshot_command(const SnapshotOptions& o) {
     if (!on_grid)
       own_run.emplace(scene.chain, make_forcing(scene.drive), IntegratorOptions{step_dt, 1});
     Integrator& sim = on_grid ? grid_run : *own_run;
-    if (!sim.advance_to(count)) {
+    if (!advance_watching(sim, count)) {
+      if (g_interrupted) return interrupted_status(done_text(i));
       std::fprintf(stderr, "chainbreak: %s\n", sim.error().c_str());
       return 1;
     }

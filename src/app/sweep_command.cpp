@@ -20,6 +20,7 @@
 #include "figures/break_maps.h"
 #include "output/output_file.h"
 #include "physics/integrator.h"
+#include "resources/resources.h"
 
 namespace cb {
 
@@ -125,10 +126,7 @@ int sweep_command(const SweepOptions& o) {
     for (auto& t : pool) t.join();
     if (watcher.joinable()) watcher.join();
   }
-  if (g_interrupted) {
-    std::fprintf(stderr, "chainbreak: interrupted; no CSV written\n");
-    return 130;
-  }
+  if (g_interrupted) return interrupted_status("no CSV written");
   if (!failure.empty()) {
     std::fprintf(stderr, "chainbreak: %s\n", failure.c_str());
     return 1;

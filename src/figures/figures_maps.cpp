@@ -65,10 +65,11 @@ Figure figure_breaking_map(const FigureOptions& o) {
                 {0.01, FigureColour::Series0, "\u03B3 = 0.01"}};
   for (const auto& c : cases) {
     std::vector<double> exact_spring;
-    for (const FirstBreak& b : breaking_map(kN, c.gamma, BreakMode::Abs, zeta, t_end))
+    for (const FirstBreak& b : breaking_map(kN, c.gamma, BreakMode::Abs, zeta, t_end, o.stop))
       exact_spring.push_back(spring_or_nan(b));
     p.series.push_back(make_series(std::string("exact ") + c.name, SeriesStyle::Line, c.colour,
                                    zeta, std::move(exact_spring)));
+    if (stopped(o)) return f;  // each exact map is seconds of work: look between them
   }
   for (const auto& c : cases) {
     const auto runs = parallel_first_breaks(static_cast<int>(coarse.size()), o.jobs, [&](int i) {
@@ -79,7 +80,7 @@ Figure figure_breaking_map(const FigureOptions& o) {
       DriveDesc ramp;
       ramp.type = DriveType::Ramp;
       ramp.beta = 1.0;
-      return simulated_first_break(chain, ramp, t_end, o.dt);
+      return simulated_first_break(chain, ramp, t_end, o.dt, o.stop);
     });
     std::vector<double> spring;
     for (const FirstBreak& b : runs) spring.push_back(spring_or_nan(b));
@@ -93,6 +94,7 @@ Figure figure_breaking_map(const FigureOptions& o) {
     Series switches =
         make_series(std::string("exact N / not-N switch ") + c.name, SeriesStyle::Points,
                     c.gamma == 0.0 ? FigureColour::Accent : c.colour, {}, {});
+    if (stopped(o)) return f;
     for (const MapBoundary& b : spring_n_boundaries(kN, c.gamma, 0.5, kMapZetaMax, 250)) {
       switches.x.push_back(b.zeta);
       switches.y.push_back(row);
@@ -161,7 +163,7 @@ Figure figure_one_body_map(const FigureOptions& o) {
   const std::vector<double> coarse = logspace(kOneBodyBetaLo, kOneBodyBetaHi, o.map_rk4 * 2);
   const auto runs = parallel_first_breaks(static_cast<int>(coarse.size()), o.jobs, [&](int i) {
     const double b = coarse[static_cast<std::size_t>(i)];
-    return simulated_first_break(chain, ramp(b), 1.0 / b + 10.0, o.dt);
+    return simulated_first_break(chain, ramp(b), 1.0 / b + 10.0, o.dt, o.stop);
   });
   std::vector<double> rk4;
   for (const FirstBreak& b : runs) rk4.push_back(spring_or_nan(b));

@@ -204,13 +204,27 @@ std::string SceneReader::where(std::string_view section, std::string_view key) c
   if (auto it = origin_.find(dotted(section, key)); it != origin_.end()) return it->second;
   if (const toml::node* n = node(section, key); n && n->source().begin.line > 0)
     return position(n->source());
-  // The key is missing: point at its table, which may itself come from an override.
+  return section_where(section);
+}
+
+// Where a missing key of `section` would go: its table, which may itself come from an
+// override, or the top of the file.
+std::string SceneReader::section_where(std::string_view section) const {
   if (const toml::node* table = section.empty() ? &root_ : root_.get(section)) {
     if (table->source().begin.line > 0) return position(table->source());
     for (const auto& [name, text] : origin_)
       if (name.rfind(std::string(section) + ".", 0) == 0) return text;
   }
   return path_ + ":1:1";
+}
+
+KeyOrigins SceneReader::origins() const {
+  KeyOrigins out;
+  out[""] = path_ + ":1:1";
+  for (std::string_view section : kSections) out[std::string(section)] = section_where(section);
+  for (const KeySpec& k : kSchema)
+    if (has(k.section, k.key)) out[dotted(k.section, k.key)] = where(k.section, k.key);
+  return out;
 }
 
 void SceneReader::fail(std::string_view section, std::string_view key,

@@ -15,7 +15,6 @@
 #include "output/output_file.h"
 #include "overlay/overlay.h"
 #include "render/renderer.h"
-#include "scene/scene_writer.h"
 #include "viewer/controls.h"
 #include "viewer/frame_placement.h"
 #include "viewer/frame_times.h"
@@ -75,15 +74,26 @@ struct Viewer {
   }
 
   // From tau = 0, with the draft's chain and drive when `apply_draft`: checked by the scene
-  // file's own rules first (N, gamma, phi_c, dt's stability limit...), with the same messages.
-  // On any failure the run and the controls stay as they were and the panel says why.
+  // file's own rules first (validate(): N, gamma, phi_c, dt's stability limit...), with the
+  // same messages. On any failure the run and the controls stay as they were and the panel
+  // says why.
   void restart(bool apply_draft) {
     try {
       SceneDesc next = session.scene();
       if (apply_draft) {
-        next = parse_scene(write_scene(draft), "the viewer's settings");
-        next.path = session.scene().path;
-        next.name = session.scene().name;
+        next.chain = draft.chain;
+        next.drive = draft.drive;
+        // The edit came from a control, not from the file: the message starts at the key.
+        next.origins.clear();
+        // chain.gamma defines units.friction = 2 m omega0 gamma, as the reader derives it.
+        if (next.units)
+          next.units->friction = next.chain.gamma * 2.0 * next.units->mass * next.units->omega0();
+        try {
+          validate(next);
+        } catch (const SceneError& e) {
+          throw SceneError(std::string("not applied: ") + e.what());
+        }
+        next.origins = session.scene().origins;
       }
       next.render.speed = model.speed;
       SceneDesc previous = std::exchange(session.scene(), std::move(next));
@@ -96,15 +106,7 @@ struct Viewer {
       }
       if (apply_draft) model.status.clear();  // an earlier rejected edit is no longer news
     } catch (const std::exception& e) {
-      // The draft is checked as a scene text nobody sees: drop its "name:line:col: " so the
-      // message starts at the key it names (e.g. "chain.threshold must be > 0 ...").
-      std::string why = e.what();
-      const std::string prefix = "the viewer's settings:";
-      if (why.rfind(prefix, 0) == 0) {
-        const auto text = why.find(": ", prefix.size());
-        if (text != std::string::npos) why = "not applied: " + why.substr(text + 2);
-      }
-      set_status(why, true);
+      set_status(e.what(), true);
       const std::string view = draft.render.view;  // the view is not part of a restart
       draft = session.scene();
       draft.render.view = view;
