@@ -4,6 +4,8 @@
 #pragma once
 
 #include <atomic>
+#include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -66,8 +68,12 @@ struct RenderOptions {
   FrameOptions frame;
   bool no_overlay = false;  // --no-overlay
   std::string overlay;      // --overlay hud,plots,spacetime,modes; empty: the scene's [render]
+  // Called on the drawing thread after each frame (the Python module's progress callback).
+  std::function<void(std::int64_t done, std::int64_t total)> on_frame;
 };
 int render_command(const RenderOptions& options);
+// The same for a scene already read (render_command loads options.scene and calls this).
+int render_scene(const SceneDesc& scene, const RenderOptions& options);
 
 struct FiguresOptions {
   std::string out_dir = "renders/figures";

@@ -7,10 +7,7 @@
 #include "drive/drive.h"
 #include "gl/gl_context.h"
 #include "output/output_file.h"
-
-namespace cb {
-std::atomic<bool> g_interrupted{false};
-}
+#include "version.h"
 
 namespace {
 
@@ -38,6 +35,8 @@ int main(int argc, char** argv) {
 
   CLI::App app{"chainbreak: a harmonic chain pulled at one end, and which spring breaks first"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("chainbreak ") + CHAINBREAK_VERSION + " (commit " +
+                                        CHAINBREAK_COMMIT + ")");
   std::vector<std::string> sets;
 
   cb::RunOptions run;

@@ -65,7 +65,10 @@ std::unique_ptr<FrameSink> open_sink(const RenderOptions& o, const SceneDesc& sc
 }  // namespace
 
 int render_command(const RenderOptions& o) {
-  const SceneDesc scene = load_scene(o.scene, o.overrides);
+  return render_scene(load_scene(o.scene, o.overrides), o);
+}
+
+int render_scene(const SceneDesc& scene, const RenderOptions& o) {
   RenderPlan plan = plan_render(scene, o);
   // The default folder is made on demand; a dry run only checks it could be.
   const bool default_folder = o.output.empty() && o.frames_dir.empty();
@@ -124,6 +127,7 @@ int render_command(const RenderOptions& o) {
         sink->push(std::move(image));
       }
       progress.update(static_cast<double>(++done));
+      if (o.on_frame) o.on_frame(done, plan.frames);
     }
   } catch (...) {
     snapshots.close();

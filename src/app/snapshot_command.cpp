@@ -9,6 +9,7 @@
 #include "app/frame_source.h"
 #include "app/frames.h"
 #include "app/render_plan.h"
+#include "app/snapshot_images.h"
 #include "output/frame_writer.h"
 #include "output/png_writer.h"
 #include "overlay/overlay.h"
@@ -56,10 +57,11 @@ constexpr double kFrameSlack = 1e-6;
 
 // With an overlay: the video's frames at those times, made as `render` makes them (its plan,
 // its FrameSource, its Overlay), so that a PNG equals the video's frame pixel for pixel.
-int overlay_snapshots(const SnapshotOptions& o, const SceneDesc& scene,
-                      const std::vector<double>& times) {
+int overlay_images(const SnapshotRequest& o, const SceneDesc& scene,
+                   const SnapshotConsumer& consume, std::string& error) {
+  const std::vector<double>& times = o.times;
   RenderOptions ro;
-  ro.frames_dir = o.out_dir;  // PNGs: no video codec to check
+  ro.frames_dir = ".";  // PNGs: no video codec to check
   ro.frame = o.frame;
   ro.overlay = o.overlay;
   RenderPlan plan = plan_render(scene, ro);
@@ -69,21 +71,20 @@ int overlay_snapshots(const SnapshotOptions& o, const SceneDesc& scene,
                                                std::to_string(kOverlayMinWidth) + "x" +
                                                std::to_string(kOverlayMinHeight) + ")"
                                          : std::string("no part switched on")));
-  require_writable_dir(o.out_dir);
   measure_plan(scene, plan);
   std::vector<std::int64_t> frames;
   for (double tau : times) {
     const double k = tau / plan.tau_per_frame;
     const auto frame = static_cast<std::int64_t>(std::llround(k));
     if (std::abs(k - static_cast<double>(frame)) > kFrameSlack)
-      throw SceneError("--at " + o.at + ": with --overlay each tau must be a frame time of the " +
-                       "video, a multiple of speed / fps = " + number(plan.tau_per_frame) +
-                       "; nearest to " + number(tau) + ": " +
-                       number(std::floor(k) * plan.tau_per_frame) + " or " +
-                       number(std::ceil(k) * plan.tau_per_frame) +
-                       " (or change the frame times with --set render.fps=... / render.speed=...)");
+      throw SceneError(
+          "--at " + o.at_text + ": with --overlay each tau must be a frame time of the " +
+          "video, a multiple of speed / fps = " + number(plan.tau_per_frame) + "; nearest to " +
+          number(tau) + ": " + number(std::floor(k) * plan.tau_per_frame) + " or " +
+          number(std::ceil(k) * plan.tau_per_frame) +
+          " (or change the frame times with --set render.fps=... / render.speed=...)");
     if (frame >= plan.frames)
-      throw SceneError("--at " + o.at + ": tau " + number(tau) +
+      throw SceneError("--at " + o.at_text + ": tau " + number(tau) +
                        " is past the video's last frame (tau " +
                        number(static_cast<double>(plan.frames - 1) * plan.tau_per_frame) +
                        "; see integrator.t_end and after_break)");
@@ -93,20 +94,17 @@ int overlay_snapshots(const SnapshotOptions& o, const SceneDesc& scene,
   Overlay overlay(plan.frame.width, plan.frame.height, plan.frame.fps, plan.overlay);
   FrameSource source(scene, plan, 1);
   for (std::size_t i = 0; i < times.size(); ++i) {
-    if (g_interrupted) return 130;
+    if (o.stop && *o.stop) return 130;
     const std::optional<RenderSnapshot> snap = source.frame(frames[i]);
     if (!snap) {
-      std::fprintf(stderr, "chainbreak: %s\n", source.error().c_str());
+      error = source.error();
       return 1;
     }
     canvas.renderer->draw(*snap);
     overlay.draw(*snap);
     Image image;
     canvas.renderer->read(image);
-    const std::string path =
-        (std::filesystem::path(o.out_dir) / snapshot_name(scene.name, times[i])).string();
-    write_png(path, image);
-    std::printf("%s\n", path.c_str());
+    consume(times[i], std::move(image));
   }
   return 0;
 }
@@ -122,13 +120,16 @@ void require_distinct_names(const std::string& scene, const std::vector<double>&
                        "; the file names keep 3 decimals, so give times at least 0.001 apart");
 }
 
-int snapshot_command(const SnapshotOptions& o) {
-  const SceneDesc scene = load_scene(o.scene, o.overrides);
-  const std::vector<double> times = parse_times(o.at);
-  require_distinct_names(scene.name, times);
-  if (!o.overlay.empty() && o.overlay != "none") return overlay_snapshots(o, scene, times);
+int snapshot_images(const SceneDesc& scene, const SnapshotRequest& o,
+                    const SnapshotConsumer& consume, std::string& error) {
+  // Themes: the one place a requested theme reaches the pictures. Until the theme option
+  // of SnapshotStyle lands, the chain is drawn in its built-in dark theme only.
+  if (!o.theme.empty() && o.theme != "dark")
+    throw SceneError("theme " + o.theme +
+                     ": this build draws snapshots in the dark theme only; use theme=\"dark\"");
+  if (!o.overlay.empty() && o.overlay != "none") return overlay_images(o, scene, consume, error);
+  const std::vector<double>& times = o.times;
   const RenderDesc frame = frame_settings(scene, o.frame);
-  require_writable_dir(o.out_dir);
   const double dt = scene.integrator.dt;
   const RunExtent extent = measure_run(scene, times.back(), dt);
   const SnapshotStyle style = snapshot_style(scene, frame, extent);
@@ -137,7 +138,7 @@ int snapshot_command(const SnapshotOptions& o) {
   // On-grid times (sorted) share one run; an off-grid time gets a run of its own.
   Integrator grid_run(scene.chain, make_forcing(scene.drive), {dt, 1});
   for (double tau : times) {
-    if (g_interrupted) return 130;
+    if (o.stop && *o.stop) return 130;
     // The integrator lands exactly on tau: on the scene's grid when tau is a multiple of dt,
     // otherwise with the step shrunk to tau / ceil(tau / dt) (never larger than dt).
     const double steps = tau / dt;
@@ -149,16 +150,37 @@ int snapshot_command(const SnapshotOptions& o) {
       own_run.emplace(scene.chain, make_forcing(scene.drive), IntegratorOptions{step_dt, 1});
     Integrator& sim = on_grid ? grid_run : *own_run;
     if (!sim.advance_to(count)) {
-      std::fprintf(stderr, "chainbreak: %s\n", sim.error().c_str());
+      error = sim.error();
       return 1;
     }
     const RenderSnapshot snap = build_snapshot(sim.state(), scene.chain, sim.force_now(), style);
-    const std::string path =
-        (std::filesystem::path(o.out_dir) / snapshot_name(scene.name, tau)).string();
-    write_png(path, canvas.renderer->render(snap));
-    std::printf("%s\n", path.c_str());
+    consume(tau, canvas.renderer->render(snap));
   }
   return 0;
+}
+
+int snapshot_command(const SnapshotOptions& o) {
+  const SceneDesc scene = load_scene(o.scene, o.overrides);
+  SnapshotRequest request;
+  request.times = parse_times(o.at);
+  request.at_text = o.at;
+  request.frame = o.frame;
+  request.overlay = o.overlay;
+  request.stop = &g_interrupted;
+  require_distinct_names(scene.name, request.times);
+  require_writable_dir(o.out_dir);
+  std::string error;
+  const int status = snapshot_images(
+      scene, request,
+      [&](double tau, Image&& image) {
+        const std::string path =
+            (std::filesystem::path(o.out_dir) / snapshot_name(scene.name, tau)).string();
+        write_png(path, image);
+        std::printf("%s\n", path.c_str());
+      },
+      error);
+  if (status == 1) std::fprintf(stderr, "chainbreak: %s\n", error.c_str());
+  return status;
 }
 
 }  // namespace cb
