@@ -5,6 +5,8 @@
 #pragma once
 
 #include <atomic>
+#include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -87,8 +89,12 @@ struct RenderOptions {
   double slowmo = -1;        // --slowmo F; < 0: the scene's [render] slowmo
   double slowmo_window = 0;  // --slowmo-window W; 0: the scene's
   double title_card = -1;    // --title-card S (seconds); < 0: the scene's
+  // Called on the drawing thread after each frame (the Python module's progress callback).
+  std::function<void(std::int64_t done, std::int64_t total)> on_frame;
 };
 int render_command(const RenderOptions& options);
+// The same for a scene already read (render_command loads options.scene and calls this).
+int render_scene(const SceneDesc& scene, const RenderOptions& options);
 
 struct FiguresOptions {
   std::string out_dir = "renders/figures";

@@ -11,6 +11,7 @@
 #include "output/output_file.h"
 #include "physics/simd.h"
 #include "resources/resources.h"
+#include "version.h"
 
 namespace {
 
@@ -49,6 +50,8 @@ int main(int argc, char** argv) {
 
   CLI::App app{"chainbreak: a harmonic chain pulled at one end, and which spring breaks first"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("chainbreak ") + CHAINBREAK_VERSION + " (commit " +
+                                        CHAINBREAK_COMMIT + ")");
   std::vector<std::string> sets;
 
   cb::RunOptions run;

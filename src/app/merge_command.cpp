@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "version.h"  // CHAINBREAK_VERSION (src/cmake/version.cmake)
 #include "app/commands.h"
 #include "app/sweep_setup.h"
 #include "cluster/merge.h"

@@ -76,13 +76,23 @@ MemoryEstimate render_memory(const SceneDesc& scene, const RenderPlan& plan) {
 
 }  // namespace
 
+int render_scenes(std::vector<SceneDesc> scenes, const RenderOptions& o);
+
 int render_command(const RenderOptions& o) {
   std::vector<SceneDesc> scenes;
   // The same --set applies to every scene of a side-by-side video.
   for (const std::string& path : o.scenes.empty() ? std::vector<std::string>{o.scene} : o.scenes)
     scenes.push_back(load_scene(path, o.overrides));
+  return render_scenes(std::move(scenes), o);
+}
+
+int render_scene(const SceneDesc& scene, const RenderOptions& o) {
+  return render_scenes({scene}, o);
+}
+
+int render_scenes(std::vector<SceneDesc> scenes, const RenderOptions& o) {
   choose_gl_backend(o.frame.gl);  // a misspelled backend fails now, not after the pre-pass
-  RunSet runs(scenes, o);  // each plan refuses too many frames before any work
+  RunSet runs(std::move(scenes), o);  // each plan refuses too many frames before any work
   const SceneDesc& scene = runs.scene(0);
   const RenderPlan& plan = runs.plan();
   const MachineMemory machine = machine_memory();
@@ -152,6 +162,7 @@ int render_command(const RenderOptions& o) {
         sink->push(std::move(image));
       }
       progress.update(static_cast<double>(++done));
+      if (o.on_frame) o.on_frame(done, runs.frames());
     }
   } catch (...) {
     snapshots.close();

@@ -8,48 +8,35 @@
 #include "app/commands.h"
 #include "app/csv.h"
 #include "app/progress.h"
-#include "exact/continuum.h"
-#include "exact/exact_chain.h"
-#include "exact/first_break.h"
+#include "app/run_rows.h"
 #include "output/output_file.h"
 #include "physics/energy.h"
-#include "physics/integrator.h"
-#include "physics/run_loop.h"
 #include "resources/resources.h"
 
 namespace cb {
 
 namespace {
 
-// The chain at one tau, whoever computed it.
-struct Sample {
-  double tau = 0.0, f = 0.0;
-  std::vector<double> psi, vel, phi;
-  EnergyParts energy;
-};
-
-// The CSV contract: tau,f,energy,kinetic,potential,phi_1..phi_N[,psi_1..psi_N]; energies
-// per particle as in Eq. (energy) (the chain's energy in units K l^2 divided by N^3).
-class CsvTable {
+// The CSV contract: tau,f,energy,kinetic,potential,phi_1..phi_N[,psi_1..psi_N]; the numbers
+// of each RunRow (run_rows.h) in shortest round-trip form.
+class CsvTable : public RowSink {
  public:
-  CsvTable(const std::string& path, int beads, bool with_psi)
-      : file_(path), beads_(beads), with_psi_(with_psi) {
+  CsvTable(const std::string& path, int beads, bool with_psi) : file_(path) {
     std::string header = "tau,f,energy,kinetic,potential";
     for (int j = 1; j <= beads; ++j) header += ",phi_" + std::to_string(j);
     if (with_psi)
       for (int j = 1; j <= beads; ++j) header += ",psi_" + std::to_string(j);
     file_.write(header + "\n");
   }
-  void row(const Sample& s) {
-    for (double v :
-         {s.tau, s.f, per_particle(s.energy.total(), beads_),
-          per_particle(s.energy.kinetic, beads_), per_particle(s.energy.potential, beads_)}) {
+  void begin(int, bool, std::int64_t) override {}
+  void row(const RunRow& r) override {
+    for (double v : {r.tau, r.f, r.energy, r.kinetic, r.potential}) {
       append_number(buffer_, v);
       buffer_ += ',';
     }
-    for (double v : s.phi) append_number(buffer_, v), buffer_ += ',';
-    if (with_psi_)
-      for (double v : s.psi) append_number(buffer_, v), buffer_ += ',';
+    for (double v : *r.phi) append_number(buffer_, v), buffer_ += ',';
+    if (r.psi)
+      for (double v : *r.psi) append_number(buffer_, v), buffer_ += ',';
     buffer_.back() = '\n';
     if (buffer_.size() > (1u << 20)) flush();
   }
@@ -64,17 +51,8 @@ class CsvTable {
     buffer_.clear();
   }
   OutputFile file_;
-  int beads_;
-  bool with_psi_;
   std::string buffer_;
 };
-
-EnergyParts energy_of(const std::vector<double>& vel, const std::vector<double>& phi) {
-  EnergyParts e;
-  for (double v : vel) e.kinetic += 0.5 * v * v;
-  for (double p : phi) e.potential += 0.5 * p * p;
-  return e;
-}
 
 std::string breaks_json(const std::vector<BreakEvent>& breaks, const std::optional<Units>& units) {
   std::string out = "[";
@@ -87,16 +65,8 @@ std::string breaks_json(const std::vector<BreakEvent>& breaks, const std::option
   return out + "]";
 }
 
-struct RunResult {
-  std::int64_t steps = 0;
-  double tau_end = 0.0;
-  std::vector<BreakEvent> breaks;
-  std::optional<ChainState> final_state;  // rk4 only: for the energy books
-  std::optional<SimdPath> simd;           // rk4 only: the kernel's instruction set
-};
-
-int finish(const RunOptions& o, const SceneDesc& scene, const RunResult& r,
-           std::optional<FirstBreak> exact_break) {
+int finish(const RunOptions& o, const SceneDesc& scene, const RunOutcome& r) {
+  const std::optional<FirstBreak>& exact_break = r.exact_break;
   std::string j =
       "{\"scene\":" + json_string(scene.name) + ",\"title\":" + json_string(scene.title);
   j += ",\"solver\":" + json_string(o.solver);
@@ -138,107 +108,9 @@ int finish(const RunOptions& o, const SceneDesc& scene, const RunResult& r,
   return 0;
 }
 
-// The last step of the run: t_end, or after_break past the first break.
+// The last step of the run at most (after_break may end it earlier).
 std::int64_t planned_steps(const SceneDesc& s) {
   return std::llround(s.integrator.t_end / s.integrator.dt);
-}
-
-int run_rk4(const RunOptions& o, const SceneDesc& scene, CsvTable* csv) {
-  const double dt = scene.integrator.dt;
-  Integrator sim(scene.chain, make_forcing(scene.drive), {dt, o.threads});
-  const std::int64_t last = planned_steps(scene);
-  Progress progress("run " + scene.name, static_cast<double>(last), o.quiet);
-  Sample sample;
-  const int n = scene.chain.beads;
-  sample.phi.resize(n);
-  auto write_row = [&] {
-    const ChainState& s = sim.state();
-    sample.tau = s.tau;
-    sample.f = sim.force_now();
-    for (int j = 1; j <= n; ++j) sample.phi[j - 1] = extension(s, j);
-    sample.psi = s.psi;
-    sample.energy = energy(s);
-    csv->row(sample);
-  };
-  StopRule stop{last, scene.integrator.after_break, false, &g_interrupted};
-  std::vector<Observer> observers;
-  if (csv) observers.push_back({o.every, true, [&](const Integrator&) { write_row(); }});
-  observers.push_back({1, false, [&](const Integrator& s) {
-                         progress.update(static_cast<double>(s.state().step));
-                       }});
-  switch (run_until(sim, stop, observers)) {
-    case RunEnd::Reached:
-      break;
-    case RunEnd::Cancelled:
-      return interrupted_status("stopped at tau = " + number_text(sim.state().tau) +
-                                "; no CSV written");
-    case RunEnd::Failed:
-      std::fprintf(stderr, "chainbreak: %s\n", sim.error().c_str());
-      return 1;
-  }
-  if (csv) csv->commit();
-  RunResult r;
-  r.steps = sim.state().step;
-  r.tau_end = sim.state().tau;
-  r.breaks = sim.state().breaks;
-  r.final_state = sim.state();
-  r.simd = sim.simd();
-  return finish(o, scene, r, std::nullopt);
-}
-
-// Exact and continuum formulas at the rk4 grid's times (every `every` steps), no breaking.
-int run_formula(const RunOptions& o, const SceneDesc& scene, CsvTable* csv) {
-  const int n = scene.chain.beads;
-  const double dt = scene.integrator.dt;
-  const std::int64_t last = planned_steps(scene);
-  const bool exact = o.solver == "exact";
-  std::unique_ptr<ExactChain> chain;
-  if (exact) chain = std::make_unique<ExactChain>(n, scene.chain.gamma, scene.drive);
-  const Forcing forcing = make_forcing(scene.drive);
-  auto f = [&](double tau) { return forcing(tau); };
-  Sample s;
-  s.psi.resize(n);
-  s.vel.resize(n);
-  s.phi.resize(n);
-  // Continuum: phi from Eq. (sum); psi by summing phi; psi' by a central difference.
-  std::vector<double> before(n), after(n);
-  auto continuum_psi = [&](double tau, std::vector<double>& psi, std::vector<double>* phi) {
-    double sum = 0.0;
-    for (int j = 1; j <= n; ++j) {
-      const double p = continuum_phi_sum(n, j, tau, f);
-      if (phi) (*phi)[j - 1] = p;
-      sum += p;
-      psi[j - 1] = sum;
-    }
-  };
-  Progress progress("run " + scene.name, static_cast<double>(last), o.quiet);
-  for (std::int64_t step = 0; csv && step <= last; step += o.every) {
-    if (g_interrupted) return interrupted_status("no CSV written");
-    s.tau = static_cast<double>(step) * dt;
-    s.f = f(s.tau);
-    if (exact) {
-      chain->evaluate(s.tau, &s.psi, &s.vel, &s.phi, nullptr);
-    } else {
-      constexpr double kDelta = 1e-4;
-      continuum_psi(s.tau, s.psi, &s.phi);
-      continuum_psi(s.tau + kDelta, after, nullptr);
-      continuum_psi(std::max(0.0, s.tau - kDelta), before, nullptr);
-      const double span = s.tau + kDelta - std::max(0.0, s.tau - kDelta);
-      for (int i = 0; i < n; ++i) s.vel[i] = (after[i] - before[i]) / span;
-    }
-    s.energy = energy_of(s.vel, s.phi);
-    csv->row(s);
-    progress.update(static_cast<double>(step));
-  }
-  if (csv) csv->commit();
-  RunResult r;
-  r.steps = last;
-  r.tau_end = static_cast<double>(last) * dt;
-  std::optional<FirstBreak> first;
-  // The exact first break needs closed forms: not available for an expr drive.
-  if (exact && scene.chain.breakable() && scene.drive.type != DriveType::Expr)
-    first = exact_first_break(scene.chain, scene.drive, r.tau_end);
-  return finish(o, scene, r, first);
 }
 
 // What the run will hold in memory and write, before any of it is allocated (rows 1-2 of
@@ -302,13 +174,13 @@ void require_disk(const RunOptions& o, const RunNeeds& n) {
 
 int run_command(const RunOptions& o) {
   const SceneDesc scene = load_scene(o.scene, o.overrides);
-  if (o.every < 1)
-    throw SceneError("--every " + std::to_string(o.every) +
-                     ": one CSV row every K steps needs K >= 1");
-  if (o.solver == "continuum" && scene.drive.type == DriveType::Impulses)
-    throw SceneError(scene.path +
-                     ": the continuum formula Eq. (sum) needs a drive with values; impulses are "
-                     "delta functions. Use --solver exact or rk4");
+  RunRequest request;
+  request.solver = o.solver;
+  request.every = o.every;
+  request.psi = o.psi;
+  request.threads = o.threads;
+  request.stop = &g_interrupted;
+  check_run_request(scene, request);
   const RunNeeds needs = run_needs(o, scene);
   const MachineMemory machine = machine_memory();
   require_memory(needs.memory, machine, "run " + scene.name,
@@ -322,8 +194,20 @@ int run_command(const RunOptions& o) {
   }
   std::unique_ptr<CsvTable> csv;
   if (!o.csv.empty()) csv = std::make_unique<CsvTable>(o.csv, scene.chain.beads, o.psi);
-  if (o.solver == "rk4") return run_rk4(o, scene, csv.get());
-  return run_formula(o, scene, csv.get());
+  Progress progress("run " + scene.name,
+                    static_cast<double>(std::llround(scene.integrator.t_end / scene.integrator.dt)),
+                    o.quiet);
+  request.on_progress = [&](double steps) { progress.update(steps); };
+  const RunOutcome outcome = run_scene(scene, request, csv.get());
+  if (outcome.status == 130)
+    return interrupted_status("stopped at tau = " + number_text(outcome.tau_end) +
+                              "; no CSV written");
+  if (outcome.status != 0) {
+    std::fprintf(stderr, "chainbreak: %s\n", outcome.error.c_str());
+    return outcome.status;
+  }
+  if (csv) csv->commit();
+  return finish(o, scene, outcome);
 }
 
 }  // namespace cb

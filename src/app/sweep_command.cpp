@@ -116,15 +116,11 @@ int sweep_command(const SweepOptions& o) {
       pool.emplace_back(worker);
     std::thread watcher;
     if (!o.quiet)
-      watcher = std::thread([&] {
-        while (done < scenes.size() && !g_interrupted && failure.empty()) {
-          progress.update(static_cast<double>(done));
-          std::this_thread::sleep_for(std::chrono::milliseconds(100));
-        }
-      });
-    worker();
-    for (auto& t : pool) t.join();
-    if (watcher.joinable()) watcher.join();
+      on_progress = [&](std::size_t done) { progress.update(static_cast<double>(done)); };
+    results = sweep_first_breaks(scenes, o.solver, o.jobs, &g_interrupted, on_progress);
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "chainbreak: %s\n", e.what());
+    return 1;
   }
   if (g_interrupted) return interrupted_status("no CSV written");
   if (!failure.empty()) {

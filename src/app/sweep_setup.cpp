@@ -1,3 +1,4 @@
+#include "version.h"  // CHAINBREAK_VERSION (src/cmake/version.cmake)
 #include "app/sweep_setup.h"
 
 #include <filesystem>

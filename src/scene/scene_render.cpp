@@ -26,23 +26,11 @@ RenderDesc read_render(const SceneReader& r) {
   d.speed = r.number("render", "speed").value_or(d.speed);
   d.view = r.string("render", "view").value_or(d.view);
   d.theme = r.string("render", "theme").value_or(d.theme);
-  if (d.theme != "dark" && d.theme != "light")
-    r.fail("render", "theme",
-           "unknown render.theme '" + d.theme + "'; " +
-               suggest(d.theme, {"dark", "light"}, "\"", "\""));
   d.slowmo = r.number("render", "slowmo").value_or(d.slowmo);
-  if (!(d.slowmo > 0.0 && d.slowmo <= 1.0))
-    r.fail("render", "slowmo",
-           "render.slowmo = " + format_exact(d.slowmo) +
-               " must be in (0, 1]: the fraction of normal speed around a break, e.g. 0.1");
-  d.slowmo_window = read_positive(r, "slowmo_window", d.slowmo_window, "tau either side of a break");
+  d.slowmo_window = r.number("render", "slowmo_window").value_or(d.slowmo_window);
   d.zoom = r.string("render", "zoom").value_or(d.zoom);  // checked against N by the app
   d.caption = r.string("render", "caption").value_or(d.caption);
   d.title_card = r.number("render", "title_card").value_or(d.title_card);
-  if (!(d.title_card >= 0.0 && d.title_card <= 60.0))
-    r.fail("render", "title_card",
-           "render.title_card = " + format_exact(d.title_card) +
-               " must be 0 to 60 seconds, e.g. title_card = 3");
   d.overlay = r.boolean("render", "overlay").value_or(d.overlay);
   d.overlay_hud = r.boolean("render", "overlay_hud").value_or(d.overlay_hud);
   d.overlay_plots = r.boolean("render", "overlay_plots").value_or(d.overlay_plots);

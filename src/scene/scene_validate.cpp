@@ -291,6 +291,22 @@ void Checker::render() const {
     fail("render.view",
          "unknown render.view '" + d.view + "'; " +
              scene_detail::suggest(d.view, {"longitudinal", "transverse", "both"}, "\"", "\""));
+  if (d.theme != "dark" && d.theme != "light")
+    fail("render.theme", "unknown render.theme '" + d.theme + "'; " +
+                             scene_detail::suggest(d.theme, {"dark", "light"}, "\"", "\""));
+  finite("render.slowmo", d.slowmo);
+  if (!(d.slowmo > 0.0 && d.slowmo <= 1.0))
+    fail("render.slowmo", "render.slowmo = " + format_exact(d.slowmo) +
+                              " must be in (0, 1]: the fraction of normal speed around a "
+                              "break, e.g. slowmo = 0.1");
+  finite("render.slowmo_window", d.slowmo_window);
+  if (!(d.slowmo_window > 0.0))
+    fail("render.slowmo_window", "render.slowmo_window must be > 0 (tau either side of a "
+                                     "break), got " + format_exact(d.slowmo_window));
+  finite("render.title_card", d.title_card);
+  if (!(d.title_card >= 0.0 && d.title_card <= 60.0))
+    fail("render.title_card", "render.title_card = " + format_exact(d.title_card) +
+                                  " must be 0 to 60 seconds, e.g. title_card = 3");
 }
 
 }  // namespace
