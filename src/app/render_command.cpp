@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <thread>
 
 #include "app/bounded_queue.h"
@@ -20,6 +21,7 @@
 #include "app/render_plan.h"
 #include "output/frame_writer.h"
 #include "output/output_file.h"
+#include "output/output_lock.h"
 #include "output/video_encoder.h"
 #include "overlay/overlay.h"
 
@@ -80,6 +82,10 @@ int render_command(const RenderOptions& o) {
   std::unique_ptr<FrameSink> sink;
   if (!(o.dry_run && default_folder && !std::filesystem::exists("renders")))
     sink = open_sink(o, scene, plan);
+  // One render at a time per output (issue #12, row 9): held until the sidecar is in place,
+  // so the video (or PNGs) and the JSON sidecar always come from the same run.
+  std::optional<OutputLock> lock;
+  if (!o.dry_run) lock.emplace(sidecar_path(scene, plan));
   measure_plan(scene, plan);
   if (o.dry_run) {
     std::printf("%s\n", plan_json(scene, plan, "", {}).c_str());

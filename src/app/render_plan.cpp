@@ -162,11 +162,15 @@ std::string plan_json(const SceneDesc& scene, const RenderPlan& p, const std::st
   return j + "]}";
 }
 
+std::string sidecar_path(const SceneDesc& scene, const RenderPlan& p) {
+  return (p.codec == "png" ? fs::path(p.output) / (scene.name + ".json")
+                           : fs::path(p.output).replace_extension(".json"))
+      .string();
+}
+
 void write_sidecar(const SceneDesc& scene, const RenderPlan& p, const std::string& gl,
                    const std::vector<BreakEvent>& breaks) {
-  const fs::path path = p.codec == "png" ? fs::path(p.output) / (scene.name + ".json")
-                                         : fs::path(p.output).replace_extension(".json");
-  OutputFile out(path.string());
+  OutputFile out(sidecar_path(scene, p));
   out.write(plan_json(scene, p, gl, breaks) + "\n");
   out.commit();
 }

@@ -41,7 +41,10 @@ void measure_plan(const SceneDesc& scene, RenderPlan& plan);
 // The JSON sidecar: scene, parameters after overrides, frames, timing, codec, GL, breaks.
 std::string plan_json(const SceneDesc& scene, const RenderPlan& plan, const std::string& gl,
                       const std::vector<BreakEvent>& breaks);
-// Writes plan_json next to the output: "<video stem>.json" or "<folder>/<scene>.json".
+// Where the JSON sidecar of the plan's output goes (out.mp4 -> out.json; a PNG folder ->
+// FOLDER/<scene>.json). Also the name `render` locks (output/output_lock.h).
+std::string sidecar_path(const SceneDesc& scene, const RenderPlan& plan);
+// Writes plan_json there.
 void write_sidecar(const SceneDesc& scene, const RenderPlan& plan, const std::string& gl,
                    const std::vector<BreakEvent>& breaks);
 

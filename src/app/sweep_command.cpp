@@ -8,6 +8,7 @@
 
 #include "app/commands.h"
 #include "app/csv.h"
+#include "app/option_parsers.h"
 #include "app/progress.h"
 #include "exact/first_break.h"
 #include "figures/break_maps.h"
@@ -17,65 +18,6 @@
 namespace cb {
 
 namespace {
-
-struct Vary {
-  std::string key;
-  double lo = 0, hi = 0;
-  int count = 0;
-  bool log = false;
-  double value(int i) const {
-    if (count == 1) return lo;
-    const double w = static_cast<double>(i) / (count - 1);
-    return log ? std::exp(std::log(lo) + w * (std::log(hi) - std::log(lo))) : lo + w * (hi - lo);
-  }
-};
-
-bool parse_double(std::string_view text, double& out) {
-  const auto r = std::from_chars(text.data(), text.data() + text.size(), out);
-  return r.ec == std::errc() && r.ptr == text.data() + text.size();
-}
-
-std::vector<std::string_view> split(std::string_view text, char sep) {
-  std::vector<std::string_view> parts;
-  for (std::size_t start = 0;;) {
-    const auto end = text.find(sep, start);
-    parts.push_back(text.substr(start, end - start));
-    if (end == std::string_view::npos) return parts;
-    start = end + 1;
-  }
-}
-
-Vary parse_vary(const std::string& text) {
-  const std::string usage =
-      "--vary " + text + ": expected KEY=LO:HI:COUNT[:log], e.g. --vary chain.threshold=1:300:420";
-  const auto eq = text.find('=');
-  if (eq == std::string::npos || eq == 0) throw SceneError(usage);
-  Vary v;
-  v.key = text.substr(0, eq);
-  const auto parts = split(std::string_view(text).substr(eq + 1), ':');
-  double count = 0;
-  if (parts.size() < 3 || parts.size() > 4 || !parse_double(parts[0], v.lo) ||
-      !parse_double(parts[1], v.hi) || !parse_double(parts[2], count) || count < 1 ||
-      count != std::floor(count) || (parts.size() == 4 && parts[3] != "log"))
-    throw SceneError(usage);
-  v.count = static_cast<int>(count);
-  v.log = parts.size() == 4;
-  if (v.log && (v.lo <= 0 || v.hi <= 0))
-    throw SceneError("--vary " + text + ": a log sweep needs LO and HI above zero");
-  return v;
-}
-
-// Shard "I/S" (I in 1..S) of `count` values: a contiguous block, so concatenating the
-// shards' rows in order gives the full table.
-std::pair<int, int> parse_shard(const std::string& text, int count) {
-  const auto parts = split(text, '/');
-  double i = 0, s = 0;
-  if (parts.size() != 2 || !parse_double(parts[0], i) || !parse_double(parts[1], s) || s < 1 ||
-      i < 1 || i > s || i != std::floor(i) || s != std::floor(s))
-    throw SceneError("--shard " + text + ": expected I/S with 1 <= I <= S, e.g. --shard 2/8");
-  const long n = count, si = static_cast<long>(s), ii = static_cast<long>(i) - 1;
-  return {static_cast<int>(n * ii / si), static_cast<int>(n * (ii + 1) / si)};
-}
 
 // The first break of one scene by RK4 (stopping at it) or by the exact solution.
 FirstBreak first_break_of(const SceneDesc& scene, const std::string& solver) {
@@ -113,6 +55,7 @@ int sweep_command(const SweepOptions& o) {
   std::atomic<std::size_t> done{0};
   std::string failure;
   std::mutex failure_mutex;
+  std::atomic<bool> failed{false};  // what the watcher reads: `failure` is the workers'
   auto worker = [&] {
     for (std::size_t i; (i = next++) < scenes.size() && !g_interrupted;) {
       try {
@@ -120,6 +63,7 @@ int sweep_command(const SweepOptions& o) {
       } catch (const std::exception& e) {
         std::lock_guard lock(failure_mutex);
         if (failure.empty()) failure = e.what();
+        failed = true;
         next = scenes.size();
       }
       ++done;
@@ -133,7 +77,7 @@ int sweep_command(const SweepOptions& o) {
     std::thread watcher;
     if (!o.quiet)
       watcher = std::thread([&] {
-        while (done < scenes.size() && !g_interrupted && failure.empty()) {
+        while (done < scenes.size() && !g_interrupted && !failed) {
           progress.update(static_cast<double>(done));
           std::this_thread::sleep_for(std::chrono::milliseconds(100));
         }

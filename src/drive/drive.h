@@ -2,6 +2,7 @@
 // gets it (make_forcing). A drive starts at t0: f(tau) = g(tau - t0) for tau >= t0, 0 before.
 #pragma once
 
+#include <istream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -39,6 +40,8 @@ Forcing make_forcing(const DriveDesc& drive);
 // Loads a CSV of "tau,f" rows (an optional header line, '#' comments) into drive.table.
 // Throws DriveError naming the file, the line and what is wrong.
 void load_drive_table(DriveDesc& drive, const std::string& path);
+// The same from a stream already open (`path` names it in messages): the fuzzer's entry.
+std::vector<std::pair<double, double>> parse_drive_table(std::istream& in, const std::string& path);
 
 struct DriveError : std::runtime_error {
   using std::runtime_error::runtime_error;
