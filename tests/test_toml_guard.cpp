@@ -120,4 +120,11 @@ TEST_CASE("fuzz findings: a quote inside a bare value does not open a string", "
   CHECK(guard_error(
             "\"k\xC3\xA9\" = 1\na.'b\xC3\xA9' = 2\n[t . \"\xC3\xA9\"]\nc = [\n'\xC3\xA9']\n") ==
         "(no error)");
+  // tests/fuzz/corpus/fuzz_set/crash_equals_in_bare_value: "=", "[" and "{" inside a bare
+  // value do not begin a value either.
+  CHECK_THAT(guard_error("v = 2hain.gmma='\xEF\xBB\xBE"
+                         "ain00e=-"),
+             Contains("g.toml:1:17: character U+FEFE outside"));
+  CHECK_THAT(guard_error("v = 2['\xC3\xA9']"), Contains("g.toml:1:8: character U+00E9 outside"));
+  CHECK_THAT(guard_error("v = 2{'\xC3\xA9'}"), Contains("g.toml:1:8: character U+00E9 outside"));
 }

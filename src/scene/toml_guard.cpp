@@ -73,7 +73,8 @@ class Scanner {
   int line_ = 1, column_ = 1;
   State state_ = State::Normal;
   // Where toml++ stands between tokens: a quote opens a string only where a key or a value
-  // begins; elsewhere ("0'x") toml++ reads it as part of a bare value, character by character.
+  // begins; elsewhere ("0'x", "2x.y='x'", "2['x'") toml++ reads it as part of a bare value,
+  // character by character, and so do '=', '[' and '{' there.
   enum class Expect { Key, Value, Other };
   Expect expect_ = Expect::Key;
   bool in_key_ = false;            // a '.' continues a dotted key
@@ -161,9 +162,9 @@ class Scanner {
       if (before == Expect::Key) in_key_ = true;
     } else if (header) {
       return table_header();
-    } else if (c == '[') {
+    } else if (c == '[' && before == Expect::Value) {
       open_ += '[', expect_ = Expect::Value;
-    } else if (c == '{') {
+    } else if (c == '{' && before == Expect::Value) {
       open_ += '{', expect_ = Expect::Key;
     } else if (c == ']' || c == '}') {
       // toml++'s parse_array hands a '}' where a value should be to parse_value, which
@@ -172,7 +173,7 @@ class Scanner {
         fail("'}' where an array expects a value; close the array with ']'");
       if (innermost == (c == ']' ? '[' : '{')) open_.pop_back();
       in_key_ = false;
-    } else if (c == '=') {
+    } else if (c == '=' && in_key_) {
       expect_ = Expect::Value, in_key_ = false;
     } else if (c == ',') {
       expect_ = innermost == '[' ? Expect::Value : innermost == '{' ? Expect::Key : Expect::Other;
