@@ -42,8 +42,9 @@ asan() {
 
 # The tests whose code under test runs threads: sweep and --threads runs ([cli]), the RK4
 # tiles and worker pool ([rk4]), the render pipeline ([render_cli], [video], [snapshot]) and
-# the viewer's recorder ([viewer]).
-TSAN_TESTS="[cli],[rk4],[render_cli],[video],[snapshot],[viewer]"
+# the viewer's recorder ([viewer]). Left out: the SIGINT test of [cli], which signals the
+# child after a fixed 0.5 s, before a TSan build (slower to start) has its handler in place.
+TSAN_TESTS="[cli]~SIGINT*,[rk4],[render_cli],[video],[snapshot],[viewer]"
 
 tsan() {
   stamp "tsan: build"
@@ -52,7 +53,8 @@ tsan() {
   stamp "tsan: tests $TSAN_TESTS"
   # halt_on_error: the first race fails the job; the child processes the tests start
   # (chainbreak, chainbreak-view) inherit the options.
-  TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 CHAINBREAK_REQUIRE_GL=1 \
+  TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1:suppressions=$root/tests/ci/tsan.supp \
+    CHAINBREAK_REQUIRE_GL=1 \
     ./build-tsan/tests/chainbreak_tests "$TSAN_TESTS"
   stamp "tsan: done"
 }
