@@ -20,10 +20,11 @@ FUZZ_SECONDS=${FUZZ_SECONDS:-60}
 configure() {  # folder, sanitizer flags, extra cmake arguments...
   local dir=$1 flags=$2
   shift 2
+  mkdir -p "$dir"
   CC=clang CXX=clang++ cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Debug \
     -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g -fno-omit-frame-pointer" -DCMAKE_CXX_FLAGS="$flags" \
     -DCMAKE_EXE_LINKER_FLAGS="$flags" -DCHAINBREAK_WERROR=ON -DCHAINBREAK_BENCH=OFF \
-    -DCHAINBREAK_TOML_HEADER_ONLY=ON "$@" > "$dir.configure.log"
+    -DCHAINBREAK_TOML_HEADER_ONLY=ON "$@" > "$dir/configure.log"
 }
 
 stamp() { echo "sanitizers: $1 $(date -u +%T)"; }
@@ -62,9 +63,10 @@ tsan() {
 
 fuzz() {
   stamp "fuzz: build"
+  mkdir -p build-fuzz
   CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=Debug \
     -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" -DCHAINBREAK_FUZZ=ON -DCHAINBREAK_WERROR=ON \
-    -DCHAINBREAK_BENCH=OFF > build-fuzz.configure.log
+    -DCHAINBREAK_BENCH=OFF > build-fuzz/configure.log
   cmake --build build-fuzz --target fuzz
   local work
   work=$(mktemp -d)
