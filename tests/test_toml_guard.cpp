@@ -128,3 +128,12 @@ TEST_CASE("fuzz findings: a quote inside a bare value does not open a string", "
   CHECK_THAT(guard_error("v = 2['\xC3\xA9']"), Contains("g.toml:1:8: character U+00E9 outside"));
   CHECK_THAT(guard_error("v = 2{'\xC3\xA9'}"), Contains("g.toml:1:8: character U+00E9 outside"));
 }
+
+TEST_CASE("fuzz findings: a date followed by a one-digit time", "[scene][hostile]") {
+  // tests/fuzz/corpus/fuzz_scene/crash_date_one_digit: toml++ scans on from the terminator
+  // after "0000-82-'s 0" and fails TOML_ASSERT_ASSUME(!is_value_terminator) (parser.inl:2636).
+  CHECK_THAT(guard_error("s = 0000-82-'s 0,00-- \n"),
+             Contains("g.toml:1:5: a date followed by a one-digit time"));
+  CHECK_THAT(guard_error("d = [1979-05-27 7]\n"), Contains("g.toml:1:6: a date followed"));
+  CHECK(guard_error("d = 1979-05-27 07:32:00\ne = 1979-05-27\nf = 1979-05-27 7") == "(no error)");
+}

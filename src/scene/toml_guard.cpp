@@ -152,6 +152,7 @@ class Scanner {
     const bool header = c == '[' && line_blank_so_far_ && open_.empty();
     line_blank_so_far_ = false;
     const Expect before = expect_;
+    if (before == Expect::Value && c >= '0' && c <= '9') check_date_time();
     const char innermost = open_.empty() ? '\0' : open_.back();
     expect_ = Expect::Other;
     if ((c == '"' || c == '\'') && before != Expect::Other) {
@@ -183,6 +184,31 @@ class Scanner {
       in_key_ = true;
     }
     advance();
+  }
+
+  static bool is_value_terminator(char c) {
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == ']' || c == '}' || c == ',' ||
+           c == '#';
+  }
+
+  // toml++ reads "YYYY-MM-DD" followed by a space as a date that may go on with a time; when
+  // one digit and a terminator follow, it scans on from the terminator, which its
+  // TOML_ASSERT_ASSUME(!is_value_terminator) forbids (parser.inl:2636). Never valid TOML.
+  void check_date_time() const {
+    std::size_t k = i_;
+    int count = 0;  // characters as toml++ counts them: '_' is skipped
+    char fifth = 0, eighth = 0;
+    for (; k < text_.size() && !is_value_terminator(text_[k]); ++k) {
+      if (text_[k] == '_') continue;
+      if (count == 4) fifth = text_[k];
+      if (count == 7) eighth = text_[k];
+      ++count;
+    }
+    if (count == 10 && fifth == '-' && eighth == '-' && at(k) == ' ' && at(k + 1) >= '0' &&
+        at(k + 1) <= '9' && k + 2 < text_.size() && is_value_terminator(text_[k + 2]))
+      fail(
+          "a date followed by a one-digit time; write a time as HH:MM:SS, e.g. "
+          "1979-05-27 07:32:00");
   }
 
   // "[name]" or "[[name]]" at the start of a line: the name must start with a bare-key
