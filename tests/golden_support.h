@@ -43,12 +43,13 @@ inline std::filesystem::path golden_actual_dir() {
 }
 
 // Compares with tests/golden/NAME.png (NAME may hold a folder: figures/fig4a); on failure
-// writes the image to golden-actual/ for a human to look at. With CHAINBREAK_UPDATE_GOLDENS=1
-// the OSMesa image becomes the golden.
-inline void check_golden(const std::string& name, GlBackend backend, const Image& actual) {
+// writes the image to golden-actual/NAME.SOURCE.png for a human to look at. With
+// CHAINBREAK_UPDATE_GOLDENS=1 an image that `may_update` becomes the golden.
+inline void check_golden_image(const std::string& name, const std::string& source, bool may_update,
+                               const Image& actual) {
   namespace fs = std::filesystem;
   const fs::path golden = golden_dir() / (name + ".png");
-  if (env_is_1("CHAINBREAK_UPDATE_GOLDENS") && backend == GlBackend::OSMesa) {
+  if (env_is_1("CHAINBREAK_UPDATE_GOLDENS") && may_update) {
     fs::create_directories(golden.parent_path());
     write_png(golden.string(), actual);
     WARN("wrote " << golden.string() << ": inspect it before committing");
@@ -61,16 +62,21 @@ inline void check_golden(const std::string& name, GlBackend backend, const Image
   const bool ok = d.same_size && d.fraction_over <= kGoldenMaxFractionOver;
   std::string written;
   if (!ok) {
-    const fs::path out = golden_actual_dir() / (name + "." + gl_backend_name(backend) + ".png");
+    const fs::path out = golden_actual_dir() / (name + "." + source + ".png");
     fs::create_directories(out.parent_path());
     written = out.string();
     write_png(written, actual);
   }
-  INFO(name << " (" << gl_backend_name(backend) << "): max channel difference " << d.max_channel
-            << ", " << 100.0 * d.fraction_over << "% of pixels over " << kGoldenChannelTolerance
+  INFO(name << " (" << source << "): max channel difference " << d.max_channel << ", "
+            << 100.0 * d.fraction_over << "% of pixels over " << kGoldenChannelTolerance
             << " (allowed " << 100.0 * kGoldenMaxFractionOver << "%)"
             << (d.same_size ? "" : ", sizes differ") << (ok ? "" : "; actual image: " + written));
   CHECK(ok);
+}
+
+// A GL frame: the OSMesa image becomes the golden on an update.
+inline void check_golden(const std::string& name, GlBackend backend, const Image& actual) {
+  check_golden_image(name, gl_backend_name(backend), backend == GlBackend::OSMesa, actual);
 }
 
 }  // namespace cb::test

@@ -156,10 +156,14 @@ TEST_CASE("SIGINT stops a run with status 130 and no CSV", "[cli]") {
     ::freopen("/dev/null", "w", stdout);
     ::freopen("/dev/null", "w", stderr);
     ::execl(CHAINBREAK_EXE, CHAINBREAK_EXE, "run", scene_path.c_str(), "--set",
-            "integrator.t_end=1e7", "--csv", csv.c_str(), "--quiet", static_cast<char*>(nullptr));
+            "integrator.t_end=1e7", "--csv", csv.c_str(), "--every", "1000", "--quiet",
+            static_cast<char*>(nullptr));
     ::_exit(127);
   }
-  ::usleep(500 * 1000);  // long enough to be integrating, far from done (1e9 steps)
+  // Long enough to be integrating, far from done (1e9 steps). A row every 1000 steps: every
+  // step's row would be ~875 GB, which the disk guard refuses (issue #12).
+  cb::test::wait_for_signal_handlers(pid);  // a loaded machine may take a while to get there
+  ::usleep(500 * 1000);
   ::kill(pid, SIGINT);
   int raw = 0;
   REQUIRE(::waitpid(pid, &raw, 0) == pid);

@@ -29,7 +29,8 @@ constexpr int kWidth = 480, kHeight = 270;
 // The ranges the app's measure_run (src/app/frames.cpp) finds for a run: largest |psi|,
 // |f| and |phi| up to the first break, so the layout is the one `chainbreak snapshot` uses.
 cb::SnapshotStyle measured_style(const cb::ChainParams& params, const cb::DriveDesc& drive,
-                                 double tau_end, cb::View view) {
+                                 double tau_end, cb::View view,
+                                 cb::ThemeName theme = cb::ThemeName::Dark) {
   cb::Integrator sim(params, cb::make_forcing(drive), {0.01, 1});
   double psi = 0.0, force = 0.0, strain = 0.0;
   bool ok = true;
@@ -47,6 +48,7 @@ cb::SnapshotStyle measured_style(const cb::ChainParams& params, const cb::DriveD
   style.width = kWidth;
   style.height = kHeight;
   style.view = view;
+  style.theme = theme;
   style.psi_range = std::max(psi, 1e-6);
   style.force_range = std::max(force, 1e-6);
   style.threshold = params.breakable() ? params.threshold : 0.0;
@@ -88,18 +90,19 @@ cb::RenderSnapshot frame_at(const cb::ChainParams& params, const cb::DriveDesc& 
 
 // scenes/step_pulse.toml (N = 30, f = u(tau), unbreakable) at tau = 45, both views: the front
 // reflected off the wall at tau = 30 runs back with extension 2 behind it.
-cb::RenderSnapshot step_pulse_reflecting() {
+cb::RenderSnapshot step_pulse_reflecting(cb::ThemeName theme = cb::ThemeName::Dark) {
   const auto params = chain(30, std::numeric_limits<double>::infinity());
   const auto d = drive(cb::DriveType::Step, 1.0);
-  return frame_at(params, d, measured_style(params, d, 120.0, cb::View::Both), 4500);
+  return frame_at(params, d, measured_style(params, d, 120.0, cb::View::Both, theme), 4500);
 }
 
 // scenes/anomalous_breaking.toml (N = 30, phi_c = 3, ramp 0.02) 0.5 after spring 30 breaks at
 // tau ~ 150: the flash, the recoiling halves, the marker and its label.
-cb::RenderSnapshot anomalous_just_broken() {
+cb::RenderSnapshot anomalous_just_broken(cb::ThemeName theme = cb::ThemeName::Dark) {
   const auto params = chain(30, 3.0);
   const auto d = drive(cb::DriveType::Ramp, 0.02);
-  return frame_at(params, d, measured_style(params, d, 400.0, cb::View::Longitudinal), 0, 0.5);
+  return frame_at(params, d, measured_style(params, d, 400.0, cb::View::Longitudinal, theme), 0,
+                  0.5);
 }
 
 // scenes/ball_pull.toml (N = 1 with a pull string, phi_c = 1, ramp 0.1) at tau = 8, before
@@ -147,6 +150,11 @@ TEST_CASE("Golden frames match within tolerance", "[golden]") {
   check_golden("anomalous_just_broken", backend, renderer.render(anomalous));
 
   check_golden("step_pulse_reflecting", backend, renderer.render(step_pulse_reflecting()));
+  // The light theme (paper, handouts): the same frames from the same drawing code.
+  check_golden("anomalous_just_broken_light", backend,
+               renderer.render(anomalous_just_broken(cb::ThemeName::Light)));
+  check_golden("step_pulse_reflecting_light", backend,
+               renderer.render(step_pulse_reflecting(cb::ThemeName::Light)));
 
   const auto ball = ball_with_pull_string();
   CHECK(ball.breaks_shown.empty());

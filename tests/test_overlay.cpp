@@ -293,8 +293,9 @@ TEST_CASE("Overlay layout: the chain's band on top, panels below it, apart", "[o
     }
   }
   // 1.8% of the height: 19 px at 1080p, 39 px at 4K.
-  CHECK(cb::overlay_layout(1920, 1080, all).font_px == 19);
-  CHECK(cb::overlay_layout(3840, 2160, all).font_px == 39);
+  CHECK(cb::overlay_layout(1920, 1080, all).font_px == 22);  // theme/fonts.h: 2% of the height
+  CHECK(cb::overlay_layout(3840, 2160, all).font_px == 43);
+  CHECK(cb::overlay_layout(854, 480, all).font_px == 14);  // never under 14 px
   // Too small, or nothing on: no overlay, the chain keeps the whole frame.
   CHECK_FALSE(cb::overlay_layout(320, 180, all).enabled);
   CHECK_FALSE(

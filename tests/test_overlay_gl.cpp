@@ -153,8 +153,8 @@ TEST_CASE("Overlay GL: plotted data land on the pixels the plot's mapping gives"
   const int px = static_cast<int>(std::floor(phi.px(60.0)));
   const int py = static_cast<int>(std::floor(phi.py(2.0)));
   INFO("phi_N point at (" << px << ", " << py << ")");
-  CHECK(channel_distance(image, px, py, cb::kOverlaySeries[2]) == 0);
-  CHECK(channel_distance(image, px, py - 12, cb::kOverlaySeries[2]) > 60);  // and a point only
+  CHECK(channel_distance(image, px, py, cb::theme(cb::ThemeName::Dark).series[2]) == 0);
+  CHECK(channel_distance(image, px, py - 12, cb::theme(cb::ThemeName::Dark).series[2]) > 60);  // and a point only
 
   // phi_1's exact line at -0.5 passes through its pixel: an antialiased line 2 px wide in its
   // colour at kOverlayExactLineAlpha over the background, so within a pixel of the mapped row
@@ -163,7 +163,7 @@ TEST_CASE("Overlay GL: plotted data land on the pixels the plot's mapping gives"
     return static_cast<std::uint8_t>(std::lround(cb::kOverlayExactLineAlpha * line +
                                                  (1.0f - cb::kOverlayExactLineAlpha) * back));
   };
-  const cb::OverlayRgb s0 = cb::kOverlaySeries[0], bg = cb::kOverlayBackground;
+  const cb::OverlayRgb s0 = cb::theme(cb::ThemeName::Dark).series[0], bg = cb::theme(cb::ThemeName::Dark).background;
   const cb::OverlayRgb line{blend(s0.r, bg.r), blend(s0.g, bg.g), blend(s0.b, bg.b)};
   const int lx = static_cast<int>(std::floor(phi.px(30.5)));
   const int ly = static_cast<int>(std::floor(phi.py(-0.5)));
@@ -181,7 +181,7 @@ TEST_CASE("Overlay GL: plotted data land on the pixels the plot's mapping gives"
     const int x = static_cast<int>(std::floor(st.px(c + 0.5)));
     const int y = static_cast<int>(std::floor(st.py(r)));
     INFO("space-time cell " << c << ", " << r << " at (" << x << ", " << y << ")");
-    CHECK(channel_distance(image, x, y, cb::overlay_strain_rgb((c - 15) / 15.0f)) == 0);
+    CHECK(channel_distance(image, x, y, cb::overlay_strain_rgb((c - 15) / 15.0f, cb::ThemeName::Dark)) == 0);
   }
 }
 

@@ -27,7 +27,8 @@
 #include "output/yuv420.h"
 #include "physics/integrator.h"
 #include "render/renderer.h"
-#include "render/text.h"
+#include "text/font.h"
+#include "text/text_layout.h"
 #include "snapshot/snapshot.h"
 
 namespace {
@@ -239,43 +240,59 @@ TEST_CASE("A segment stops at its end points", "[render]") {
   CHECK(diff(image, 110, 12, bg) == 0);
 }
 
-TEST_CASE("A label draws its colour inside its box and nothing outside", "[render]") {
+TEST_CASE("A label draws the typeface's anti-aliased glyphs where the layout puts them",
+          "[render][text]") {
   const cb::GlBackend backend = GENERATE(cb::GlBackend::OSMesa, cb::GlBackend::Egl);
   INFO("backend " << cb::gl_backend_name(backend));
   auto context = cb::test::create_or_skip(backend);
   if (!context) return;
-  constexpr int kW = 160, kH = 48;
+  constexpr int kW = 220, kH = 60;
   const cb::Color bg = rgb255(10, 10, 10);
   cb::RenderSnapshot snap = blank_snapshot(kW, kH, bg);
-  // Capitals only: stb_easy_font draws them within the cap height (7 units, scaled to 14 px).
-  const cb::Label label{"CHAIN 42", 20, 10, 14, rgb255(230, 230, 240)};
+  // Greek, a subscript and a minus sign: real glyphs, not names.
+  const cb::Label label{"τ = 12 φ_c \u2212ψ", 20.3f, 14.6f, 22.0f, rgb255(230, 230, 240)};
   snap.layers[cb::kLayerMarks].labels.push_back(label);
-  const float width = cb::label_width(label.text, label.size);
-  REQUIRE(width > 0.0f);
 
   cb::Renderer renderer(kW, kH);
   const cb::Image image = renderer.render(snap);
-  int ink = 0, outside = 0, blended = 0;
-  std::string first_outside;
+  // The oracle: stb_truetype's coverage of each glyph, placed by the layout on whole pixels
+  // (baseline one cap height below the label's top), blended over the background. Expected
+  // within 2/255 (8-bit rounding of the blend on two paths).
+  const cb::TextLine line = cb::layout_text(label.text, label.size);
+  const int x0 = static_cast<int>(std::round(label.x));
+  const int baseline = static_cast<int>(std::round(label.y + line.cap_height));
+  std::vector<int> expected(kW * kH, -1);  // coverage per pixel; -1: no glyph there
+  for (const cb::PlacedGlyph& g : line.glyphs) {
+    const cb::GlyphBitmap bm = cb::Font::get(cb::FontFace::Sans).rasterize(g.c, g.px);
+    for (int y = 0; y < bm.height; ++y)
+      for (int x = 0; x < bm.width; ++x) {
+        const int px = x0 + g.x + bm.left + x, py = baseline + g.dy + bm.top + y;
+        REQUIRE((px >= 0 && px < kW && py >= 0 && py < kH));
+        int& e = expected[py * kW + px];
+        e = std::max(e, static_cast<int>(bm.coverage[y * bm.width + x]));
+      }
+  }
+  int worst = 0, partial = 0, full = 0;
+  std::string where;
   for (int y = 0; y < kH; ++y)
     for (int x = 0; x < kW; ++x) {
-      const bool in_box =
-          x >= label.x && x < label.x + width && y >= label.y && y < label.y + label.size;
-      if (diff(image, x, y, label.color) == 0) {
-        if (in_box) {
-          ++ink;
-        } else if (outside++ == 0) {
-          first_outside = describe_pixel(image, x, y);
-        }
-      } else if (diff(image, x, y, bg) != 0) {
-        ++blended;  // text is opaque and unantialiased: either colour, nothing between
+      const int cov = std::max(0, expected[y * kW + x]);
+      const auto* p = &image.rgba[(static_cast<std::size_t>(y) * kW + x) * 4];
+      const float want = 10.0f + (230.0f - 10.0f) * cov / 255.0f;  // the red channel
+      const int d = static_cast<int>(std::abs(p[0] - want) + 0.5f);
+      if (d > worst) {
+        worst = d;
+        where = describe_pixel(image, x, y);
       }
+      partial += cov > 0 && cov < 255;
+      full += cov == 255;
     }
-  INFO("first text pixel outside the box " << first_outside);
-  CHECK(outside == 0);
-  CHECK(blended == 0);
-  // Each of the 7 glyphs has strokes 2 px wide and at least 7 px long.
-  CHECK(ink >= 7 * 14);
+  INFO("worst pixel " << where);
+  CHECK(worst <= 2);
+  CHECK(partial > 50);  // anti-aliased edges, not a bitmap font
+  CHECK(full > 30);
+  // τ, φ, ψ and the minus sign are in the face (no replacement glyph).
+  for (const cb::PlacedGlyph& g : line.glyphs) CHECK(g.c != U'\uFFFD');
 }
 
 TEST_CASE("A spring shows strain_color of its extension", "[render]") {
@@ -366,16 +383,17 @@ TEST_CASE("The break marker appears after the break and not before", "[render]")
   const cb::Image b = renderer.render(after);
   // The label's box; 10/7 of the cap height leaves room for descenders (p, g).
   const int x0 = static_cast<int>(std::floor(label->x));
-  const int x1 = static_cast<int>(std::ceil(label->x + cb::label_width(label->text, label->size)));
-  const int y0 = static_cast<int>(std::floor(label->y));
-  const int y1 = static_cast<int>(std::ceil(label->y + label->size * 10.0f / 7.0f));
+  const int x1 = static_cast<int>(std::ceil(label->x + cb::text_width(label->text, label->size)));
+  // From above the capitals (accents) to below the descenders: the font's pixel height.
+  const int y0 = static_cast<int>(std::floor(label->y - 0.2f * label->size));
+  const int y1 = static_cast<int>(std::ceil(label->y + label->size));
   REQUIRE(x1 <= style.width);
   REQUIRE(y1 <= style.height);
   int background_before = 0, text_after = 0;
   for (int y = y0; y < y1; ++y)
     for (int x = x0; x < x1; ++x) {
       background_before += diff(a, x, y, before.background) == 0;
-      text_after += diff(b, x, y, label->color) == 0;
+      text_after += diff(b, x, y, before.background) > 60;  // ink, anti-aliased edges aside
     }
   CHECK(background_before == (x1 - x0) * (y1 - y0));
   CHECK(text_after >= 100);  // ~25 glyphs

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -55,6 +57,31 @@ struct RunResult {
   int status = -1;
   std::string out, err;
 };
+
+// Waits (up to `seconds`) until process `pid` runs chainbreak and has its own handler for
+// SIGINT and SIGTERM (SigCgt of /proc/PID/status). A signal sent before then would kill it by
+// the default action, which says nothing about chainbreak; and a forked child has the test
+// runner's handlers (Catch2 installs some) until its execv. False if it never got there.
+inline bool wait_for_signal_handlers(pid_t pid, double seconds = 20) {
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  const auto exe = std::filesystem::canonical(CHAINBREAK_EXE);
+  while (std::chrono::steady_clock::now() < give_up) {
+    std::error_code error;
+    const auto now = std::filesystem::read_symlink("/proc/" + std::to_string(pid) + "/exe", error);
+    if (error) return false;  // gone
+    if (now == exe) {
+      std::ifstream in("/proc/" + std::to_string(pid) + "/status");
+      for (std::string line; std::getline(in, line);)
+        if (line.rfind("SigCgt:", 0) == 0) {
+          const unsigned long long mask = std::stoull(line.substr(7), nullptr, 16);
+          const unsigned long long want = (1ull << (SIGINT - 1)) | (1ull << (SIGTERM - 1));
+          if ((mask & want) == want) return true;
+        }
+    }
+    ::usleep(2000);
+  }
+  return false;
+}
 
 // Runs a shell command line (the arguments used in tests have no quotes): its exit status,
 // stdout and stderr.

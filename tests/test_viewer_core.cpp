@@ -158,8 +158,8 @@ TEST_CASE("the session steps on render's frame grid, restarts and changes the vi
       cb::load_scene(std::string(CHAINBREAK_SCENES) + "/anomalous_breaking.toml",
                      {{"render.speed", "12"}, {"integrator.t_end", "20"}});
   cb::Session session(scene, options);
-  CHECK(session.plan().substeps == 20);
-  CHECK(session.plan().frames == 101);
+  CHECK(session.plan().grid.substeps() == 20);
+  CHECK(session.plan().grid.frames() == 101);
   session.advance(100);
   CHECK(session.frame() == 100);
   CHECK(session.at_end());

@@ -1,18 +1,20 @@
 // The command-line commands. Each returns the process exit status:
 // 0 success, 1 a run that failed (non-finite state, write error), 2 a user error in the
-// scene or the options, 130 interrupted (SIGINT/SIGTERM).
+// scene or the options (or a request past a resource limit), 130 interrupted by SIGINT,
+// 143 by SIGTERM (interrupt/interrupt.h).
 #pragma once
 
 #include <atomic>
+#include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "app/frames.h"
+#include "interrupt/interrupt.h"
 #include "scene/scene.h"
 
 namespace cb {
-
-extern std::atomic<bool> g_interrupted;  // set by the signal handler; long loops poll it
 
 struct RunOptions {
   std::string scene;
@@ -23,23 +25,40 @@ struct RunOptions {
   bool psi = false;
   bool quiet = false;
   int threads = 1;
+  bool dry_run = false;  // print the plan and the resource estimate; run nothing
 };
 int run_command(const RunOptions& options);
 
 struct SweepOptions {
   std::string scene;
   std::vector<Override> overrides;
-  std::string vary;            // KEY=LO:HI:COUNT[:log]
+  // The grid's axes in command-line order (first slowest): "--vary KEY=LO:HI:COUNT[:log]" or
+  // "--values KEY=V1,V2,...", each kept with its option name.
+  std::vector<std::string> axes;
   std::string solver = "rk4";  // rk4 | exact
   int jobs = 0;                // 0: all cores
-  std::string shard = "1/1";   // I/S, I in 1..S
+  std::string shard = "1/1";   // I/S, I in 1..S, or "slurm" (from the array task's variables)
   std::string csv;
   bool quiet = false;
+  // --submit slurm: an sbatch array of `tasks` shards instead of computing here.
+  std::string submit;
+  int tasks = 0;
+  bool wait = false;                     // follow the array, then merge
+  std::vector<std::string> sbatch_args;  // extra #SBATCH lines
+  int max_running = 0;                   // the array's %K throttle; 0: none
 };
 int sweep_command(const SweepOptions& options);
 
+struct MergeOptions {
+  std::string csv;                  // merged table; its record goes to the same name .json
+  std::vector<std::string> inputs;  // shard CSVs or folders of them
+  bool quiet = false;
+};
+int merge_command(const MergeOptions& options);
+
 struct SnapshotOptions {
-  std::string scene;
+  std::string scene;                // the first (or only) scene
+  std::vector<std::string> scenes;  // 1-4 scenes: 2-4 are stacked in one picture
   std::vector<Override> overrides;
   std::string at;  // "T1,T2,..."
   std::string out_dir = "renders";
@@ -52,7 +71,8 @@ struct SnapshotOptions {
 int snapshot_command(const SnapshotOptions& options);
 
 struct RenderOptions {
-  std::string scene;
+  std::string scene;                // the first (or only) scene
+  std::vector<std::string> scenes;  // 1-4 scenes: 2-4 are rendered side by side
   std::vector<Override> overrides;
   std::string output;      // video file; empty: renders/<scene>.mp4
   std::string frames_dir;  // PNG sequence here instead of a video
@@ -66,15 +86,23 @@ struct RenderOptions {
   FrameOptions frame;
   bool no_overlay = false;  // --no-overlay
   std::string overlay;      // --overlay hud,plots,spacetime,modes; empty: the scene's [render]
+  double slowmo = -1;        // --slowmo F; < 0: the scene's [render] slowmo
+  double slowmo_window = 0;  // --slowmo-window W; 0: the scene's
+  double title_card = -1;    // --title-card S (seconds); < 0: the scene's
+  // Called on the drawing thread after each frame (the Python module's progress callback).
+  std::function<void(std::int64_t done, std::int64_t total)> on_frame;
 };
 int render_command(const RenderOptions& options);
+// The same for a scene already read (render_command loads options.scene and calls this).
+int render_scene(const SceneDesc& scene, const RenderOptions& options);
 
 struct FiguresOptions {
   std::string out_dir = "renders/figures";
   std::string only;  // comma-separated figure names; empty: all
   int jobs = 0;      // threads for the RK4 maps; 0: all cores
   bool quiet = false;
-  FrameOptions frame;  // only .gl is used: the figures have a fixed size
+  std::string theme = "light";  // light (paper, the default) or dark (projector)
+  std::string formats = "png";  // png,svg,pdf: any subset
 };
 int figures_command(const FiguresOptions& options);
 

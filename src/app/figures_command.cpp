@@ -1,4 +1,5 @@
-// `chainbreak figures`: the paper's Figs. 3-5 and two breaking maps as PNG + CSV.
+// `chainbreak figures`: the paper's Figs. 3-5 and two breaking maps as PNG, SVG and/or PDF
+// (drawn by the cairo backend, src/figure_cairo) + CSV.
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -6,12 +7,13 @@
 
 #include "app/commands.h"
 #include "app/figure_csv.h"
-#include "app/figure_image.h"
 #include "app/progress.h"
+#include "figure_cairo/figure_output.h"
 #include "figures/figure_specs.h"
 #include "output/frame_writer.h"
 #include "output/output_file.h"
 #include "output/png_writer.h"
+#include "theme/fonts.h"
 
 namespace cb {
 
@@ -44,16 +46,39 @@ void make_output_dir(const std::string& dir) {
   require_writable_dir(dir);
 }
 
+// One figure in one format, written whole or not at all; returns the file's path.
+std::string write_figure(const Figure& figure, const Theme& theme, FigureFormat format,
+                         const std::filesystem::path& stem) {
+  const std::string path = stem.string() + "." + figure_format_name(format);
+  if (format == FigureFormat::Png) {
+    write_png(path, figure_image(figure, theme));
+  } else {
+    OutputFile file(path);
+    file.write(figure_vector(figure, theme, format));
+    file.commit();
+  }
+  return path;
+}
+
 }  // namespace
 
 int figures_command(const FiguresOptions& o) {
   const std::set<std::string> only = parse_only(o.only);
+  const std::optional<ThemeName> theme_id = parse_theme(o.theme);
+  if (!theme_id)
+    throw SceneError("--theme " + o.theme + ": no such theme; use light (paper) or dark");
+  const std::optional<std::vector<FigureFormat>> formats = parse_figure_formats(o.formats);
+  if (!formats)
+    throw SceneError("--format " + o.formats +
+                     ": expected png, svg, pdf or a comma-separated list of them without "
+                     "repeats, e.g. --format png,svg,pdf");
+  const Theme& theme = cb::theme(*theme_id);
+  // The typeface first: a machine without it fails at once, not after the computing.
+  for (FontFace face : {FontFace::Sans, FontFace::Bold}) font_path(face);
   make_output_dir(o.out_dir);
-  // GL first: a machine without it fails at once, not after the computing.
-  Canvas canvas = make_canvas(o.frame, kFigureWidth, kFigureHeight);
-  FigureDrawer drawer(kFigureWidth, kFigureHeight);
   FigureOptions options;
   options.jobs = o.jobs;
+  options.stop = &g_interrupted;
   const auto start = std::chrono::steady_clock::now();
   int done = 0;
   const int total =
@@ -62,17 +87,22 @@ int figures_command(const FiguresOptions& o) {
     Progress progress("figures", total, o.quiet, "figures");
     for (const FigureEntry& entry : figure_entries()) {
       if (!only.empty() && !only.count(entry.name)) continue;
-      if (g_interrupted) {
-        std::fprintf(stderr, "chainbreak: interrupted after %d of %d figures\n", done, total);
-        return 130;
-      }
+      const auto left = [&] {
+        return "after " + std::to_string(done) + " of " + std::to_string(total) +
+               " figures (their PNG and CSV are complete)";
+      };
+      if (g_interrupted) return interrupted_status(left());
       const Figure figure = entry.build(options);
+      if (g_interrupted) return interrupted_status(left());  // the figure may be incomplete
       const std::filesystem::path stem = std::filesystem::path(o.out_dir) / entry.name;
-      write_png(stem.string() + ".png", figure_image(*canvas.renderer, drawer, figure));
+      for (FigureFormat format : *formats) {
+        std::printf("%s\n", write_figure(figure, theme, format, stem).c_str());
+        if (g_interrupted) return interrupted_status(left());
+      }
       OutputFile csv(stem.string() + ".csv");
       csv.write(figure_csv(figure));
       csv.commit();
-      std::printf("%s.png\n%s.csv\n", stem.c_str(), stem.c_str());
+      std::printf("%s.csv\n", stem.c_str());
       std::fflush(stdout);
       progress.update(++done);
     }
@@ -80,8 +110,10 @@ int figures_command(const FiguresOptions& o) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!o.quiet)
-    std::fprintf(stderr, "figures: %d figures (PNG %dx%d + CSV) written to %s in %.1f s\n", done,
-                 kFigureWidth, kFigureHeight, o.out_dir.c_str(), seconds);
+    std::fprintf(stderr,
+                 "figures: %d figures (%s, %s theme, %dx%d + CSV) written to %s in %.1f s\n", done,
+                 o.formats.c_str(), theme_name(*theme_id), kFigureWidth, kFigureHeight,
+                 o.out_dir.c_str(), seconds);
   return 0;
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "app/render_plan.h"
+#include "app/zoom.h"
 #include "overlay/overlay_history.h"
 #include "physics/integrator.h"
 #include "snapshot/snapshot.h"
@@ -33,6 +34,8 @@ class FrameSource {
   Integrator sim_;
   std::unique_ptr<OverlayHistory> history_;  // null: no overlay
   std::int64_t next_ = 0;                    // the next frame the history records
+  ZoomCamera camera_;                        // moved once per recorded frame
+  int zoom_first_ = 0, zoom_last_ = 0;       // the camera's stretch at the latest frame
 };
 
 }  // namespace cb

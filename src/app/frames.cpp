@@ -1,4 +1,5 @@
 #include "app/frames.h"
+#include "app/zoom.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,9 +7,11 @@
 #include <tuple>
 
 #include "app/option_parsers.h"
+#include "interrupt/interrupt.h"
 #include "overlay/overlay_history.h"
 #include "physics/energy.h"
 #include "physics/integrator.h"
+#include "physics/run_loop.h"
 
 namespace cb {
 
@@ -45,6 +48,13 @@ RenderDesc frame_settings(const SceneDesc& scene, const FrameOptions& o) {
       throw SceneError("--view " + o.view + ": expected longitudinal, transverse or both");
     d.view = o.view;
   }
+  if (!o.theme.empty()) {
+    if (!parse_theme(o.theme)) throw SceneError("--theme " + o.theme + ": expected dark or light");
+    d.theme = o.theme;
+  }
+  if (!o.zoom.empty()) d.zoom = o.zoom;
+  if (!o.caption.empty()) d.caption = o.caption;
+  parse_zoom(d.zoom, scene.chain.beads, o.zoom.empty() ? "render.zoom =" : "--zoom");
   return d;
 }
 
@@ -66,37 +76,49 @@ void sample_overlay(const ChainState& state, const ChainParams& params, RunExten
 }  // namespace
 
 RunExtent measure_run(const SceneDesc& scene, double tau_stop, double dt,
-                      std::int64_t sample_every) {
+                      std::int64_t sample_every, bool every_break) {
   Integrator sim(scene.chain, make_forcing(scene.drive), {dt, 1});
   RunExtent e;
   e.tau_stop = tau_stop;
   double psi = 0.0, force = 0.0, strain = 0.0;
   const auto last = static_cast<std::int64_t>(std::llround(tau_stop / dt));
-  bool broken = false;
-  while (sim.state().step < last) {
-    if (!sim.step()) throw std::runtime_error(sim.error());
-    if (sample_every > 0 && sim.state().breaks.empty() && sim.state().step % sample_every == 0)
-      sample_overlay(sim.state(), scene.chain, e);
-    if (!broken) {
-      const auto& x = sim.state().psi;
-      for (std::size_t i = 0; i < x.size(); ++i) {
-        psi = std::max(psi, std::abs(x[i]));
-        strain = std::max(strain, std::abs(x[i] - (i ? x[i - 1] : 0.0)));
-      }
-      force = std::max(force, std::abs(sim.force_now()));
-    }
-    if (!broken && !sim.state().breaks.empty()) {
-      broken = true;
-      if (scene.integrator.after_break)
-        e.tau_stop =
-            std::min(tau_stop, sim.state().breaks.front().tau + *scene.integrator.after_break);
-      if (e.tau_stop < tau_stop) break;
-    }
+  // Nothing is measured after the first break, so the pre-pass ends there.
+  const StopRule stop{last, std::nullopt, true, &g_interrupted};
+  const Observer watch{
+      1, false, [&](const Integrator& s) {
+        if (sample_every > 0 && s.state().breaks.empty() && s.state().step % sample_every == 0)
+          sample_overlay(s.state(), scene.chain, e);
+        const auto& x = s.state().psi;
+        for (std::size_t i = 0; i < x.size(); ++i) {
+          psi = std::max(psi, std::abs(x[i]));
+          strain = std::max(strain, std::abs(x[i] - (i ? x[i - 1] : 0.0)));
+        }
+        force = std::max(force, std::abs(s.force_now()));
+      }};
+  const RunEnd end = run_until(sim, stop, {watch});
+  if (end == RunEnd::Failed) throw std::runtime_error(sim.error());
+  if (end == RunEnd::Cancelled) throw Interrupted();  // the pre-pass of a long run takes a while
+  if (!sim.state().breaks.empty() && scene.integrator.after_break)
+    e.tau_stop = std::min(tau_stop, sim.state().breaks.front().tau + *scene.integrator.after_break);
+  if (every_break && !sim.state().breaks.empty()) {
+    // Slow motion needs every break the video shows: on to where the video stops.
+    const StopRule rest{static_cast<std::int64_t>(std::floor(e.tau_stop / dt + 1e-9)), std::nullopt,
+                        false, &g_interrupted};
+    const RunEnd rest_end = run_until(sim, rest);
+    if (rest_end == RunEnd::Failed) throw std::runtime_error(sim.error());
+    if (rest_end == RunEnd::Cancelled) throw Interrupted();
   }
+  for (const BreakEvent& b : sim.state().breaks)
+    if (b.tau <= e.tau_stop) e.breaks.push_back(b);
   e.psi_range = std::max(psi, 1e-6);
   e.force_range = std::max(force, 1e-6);
   e.strain_range = std::max(strain, 1e-6);
   return e;
+}
+
+bool advance_watching(Integrator& sim, std::int64_t target_step) {
+  const StopRule rule{target_step, std::nullopt, false, &g_interrupted};
+  return run_until(sim, rule) == RunEnd::Reached;
 }
 
 SnapshotStyle snapshot_style(const SceneDesc& scene, const RenderDesc& frame,
@@ -105,6 +127,13 @@ SnapshotStyle snapshot_style(const SceneDesc& scene, const RenderDesc& frame,
   s.width = frame.width;
   s.height = frame.height;
   parse_view(frame.view, s.view);
+  s.theme = parse_theme(frame.theme).value_or(ThemeName::Dark);
+  s.caption = frame.caption;
+  const ZoomSpec zoom = parse_zoom(frame.zoom, scene.chain.beads, "--zoom");
+  if (zoom.mode == ZoomSpec::Mode::Fixed) {
+    s.zoom_first = zoom.first;
+    s.zoom_last = zoom.last;
+  }
   s.psi_range = extent.psi_range;
   s.force_range = extent.force_range;
   s.threshold = scene.chain.breakable() ? scene.chain.threshold : 0.0;

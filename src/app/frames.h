@@ -6,8 +6,10 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "gl/gl_context.h"
+#include "physics/integrator.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
 #include "snapshot/snapshot.h"
@@ -19,6 +21,9 @@ struct FrameOptions {
   std::string size;     // "WxH" or empty
   std::string quality;  // l | m | h | k or empty
   std::string view;     // longitudinal | transverse | both or empty
+  std::string theme;    // dark | light or empty
+  std::string zoom;     // app/zoom.h or empty
+  std::string caption;  // a line under the chain or empty
   std::string gl;       // auto | osmesa | egl or empty (CHAINBREAK_GL)
 };
 
@@ -28,7 +33,7 @@ RenderDesc frame_settings(const SceneDesc& scene, const FrameOptions& options);
 // Runs the physics once up to tau_stop (or the first break plus after_break, whichever comes
 // first) and returns the layout that keeps the chain in the frame for the whole run: psi
 // and force ranges up to the first break (the detached part may then leave the frame).
-// Also reports where the run stops.
+// Also reports where the run stops. Throws Interrupted on SIGINT/SIGTERM.
 // With `sample_every` > 0 it also samples, every that many steps (a video's frames) up to the
 // first break, what the overlay's plot axes need: the extremes of phi_1, phi_N/2, phi_N and
 // of the energy per particle. (After a break a detached end flies off: scaling the axes to
@@ -39,9 +44,17 @@ struct RunExtent {
   double strain_range = 1.0;  // the largest |phi| (colour scale of an unbreakable chain)
   double tau_stop = 0.0;
   double phi_min = 0.0, phi_max = 0.0, energy_max = 0.0;  // sampled (see above)
+  std::vector<BreakEvent> breaks;  // the first break, or every break up to tau_stop
 };
+// With `every_break` it runs on to where the video stops to find every break in it (slow
+// motion slows down around each); otherwise it stops at the first break.
 RunExtent measure_run(const SceneDesc& scene, double tau_stop, double dt,
-                      std::int64_t sample_every = 0);
+                      std::int64_t sample_every = 0, bool every_break = false);
+
+// Steps `sim` up to `target_step` one step at a time, watching g_interrupted between steps
+// (a step of a large chain is milliseconds; a whole advance can be minutes). False on a
+// non-finite state (sim.error() says why) or an interrupt (g_interrupted is then set).
+bool advance_watching(Integrator& sim, std::int64_t target_step);
 
 SnapshotStyle snapshot_style(const SceneDesc& scene, const RenderDesc& frame,
                              const RunExtent& extent);

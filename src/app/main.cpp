@@ -1,27 +1,40 @@
 // chainbreak: which part of a chain breaks (S. K. Baek). The command line.
 #include <CLI/CLI.hpp>
-#include <csignal>
 #include <cstdio>
+#include <limits>
 
 #include "app/commands.h"
+#include "cluster/grid.h"
+#include "cluster/merge.h"
 #include "drive/drive.h"
 #include "gl/gl_context.h"
 #include "output/output_file.h"
-
-namespace cb {
-std::atomic<bool> g_interrupted{false};
-}
+#include "physics/simd.h"
+#include "resources/resources.h"
+#include "version.h"
 
 namespace {
-
-void on_signal(int) {
-  cb::g_interrupted = true;
-}
 
 // A mistake the user can fix (scene, options, output path): the message and status 2.
 int user_error(const char* message, const char* prefix) {
   std::fprintf(stderr, "%s%s\n", prefix, message);
   return 2;
+}
+
+// A count such as --every K: CLI11's own range checks print their bounds as doubles
+// ("0.000000 to 1797693134862315708..."), so this one says K >= 1 in words.
+CLI::Validator whole_number_at_least_1(const std::string& name) {
+  return CLI::Validator(
+      [name](std::string& text) -> std::string {
+        long long v = 0;
+        char tail = 0;
+        if (std::sscanf(text.c_str(), "%lld%c", &v, &tail) != 1 || v < 1 ||
+            v > std::numeric_limits<int>::max())
+          return "expected a whole number " + name + " >= 1 (at most " +
+                 std::to_string(std::numeric_limits<int>::max()) + "), got '" + text + "'";
+        return {};
+      },
+      name + " >= 1");
 }
 
 std::vector<cb::Override> parse_overrides(const std::vector<std::string>& sets) {
@@ -33,11 +46,12 @@ std::vector<cb::Override> parse_overrides(const std::vector<std::string>& sets) 
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::signal(SIGINT, on_signal);
-  std::signal(SIGTERM, on_signal);
+  cb::install_interrupt_handler();
 
   CLI::App app{"chainbreak: a harmonic chain pulled at one end, and which spring breaks first"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("chainbreak ") + CHAINBREAK_VERSION + " (commit " +
+                                        CHAINBREAK_COMMIT + ")");
   std::vector<std::string> sets;
 
   cb::RunOptions run;
@@ -51,29 +65,61 @@ int main(int argc, char** argv) {
                    "rk4 (with breaking), exact or continuum (formulas, no breaking)")
       ->check(CLI::IsMember({"rk4", "exact", "continuum"}));
   run_cmd->add_option("--csv", run.csv, "Write tau,f,energy,kinetic,potential,phi_1..phi_N here");
-  run_cmd->add_option("--every", run.every, "One CSV row every K steps")
-      ->check(CLI::PositiveNumber);
+  run_cmd->add_option("--every", run.every, "One CSV row every K steps (K >= 1)")
+      ->check(whole_number_at_least_1("K"));
+  run_cmd->add_flag("--dry-run", run.dry_run,
+                    "Check the scene and the output; print the plan and the memory, CSV rows "
+                    "and bytes it needs; run nothing");
   run_cmd->add_flag("--psi", run.psi, "Add psi_1..psi_N columns to the CSV");
   run_cmd->add_option("--threads", run.threads, "Threads for the integrator (helps from N ~ 10^5)")
       ->check(CLI::Range(1, 256));
   run_cmd->add_flag("--quiet,-q", run.quiet, "No progress output");
 
   cb::SweepOptions sweep;
+  std::vector<std::string> varies, values;
   auto* sweep_cmd = app.add_subcommand(
-      "sweep", "Which spring breaks first as one key varies; CSV value,spring,tau");
+      "sweep",
+      "Which spring breaks first over a grid of scene keys; CSV value,spring,tau (one key) or "
+      "KEY1,KEY2,...,spring,tau");
   sweep_cmd->add_option("scene", sweep.scene, "Scene file (scenes/*.toml)")->required();
   sweep_cmd->add_option("--set", sets, "Override a scene key (repeatable)");
-  sweep_cmd
-      ->add_option("--vary", sweep.vary, "KEY=LO:HI:COUNT[:log], e.g. chain.threshold=1:300:420")
-      ->required();
+  auto* vary_opt = sweep_cmd->add_option(
+      "--vary", varies,
+      "KEY=LO:HI:COUNT[:log], e.g. chain.threshold=1:300:420 (repeatable: a grid, first slowest)");
+  auto* values_opt = sweep_cmd->add_option(
+      "--values", values, "KEY=V1,V2,...: explicit values of a key (repeatable, with --vary)");
   sweep_cmd->add_option("--solver", sweep.solver, "rk4 or exact")
       ->check(CLI::IsMember({"rk4", "exact"}));
   sweep_cmd->add_option("--jobs,-j", sweep.jobs, "Parallel jobs (default: all cores)")
       ->check(CLI::NonNegativeNumber);
   sweep_cmd->add_option("--shard", sweep.shard,
-                        "I/S: compute only the I-th of S contiguous blocks of values");
+                        "I/S: compute only the I-th of S contiguous blocks of the grid; slurm: "
+                        "take I and S from the Slurm array task");
   sweep_cmd->add_option("--csv", sweep.csv, "Output CSV")->required();
   sweep_cmd->add_flag("--quiet,-q", sweep.quiet, "No progress output");
+  sweep_cmd
+      ->add_option("--submit", sweep.submit,
+                   "slurm: submit the grid as an sbatch array of --tasks shards (script beside "
+                   "the CSV, shards in CSV.shards/); rerun to resubmit only unfinished shards")
+      ->check(CLI::IsMember({"slurm"}));
+  sweep_cmd->add_option("--tasks", sweep.tasks, "Shards (array tasks) for --submit")
+      ->check(CLI::PositiveNumber);
+  sweep_cmd->add_flag("--wait", sweep.wait, "With --submit: follow the array, then merge");
+  sweep_cmd->add_option("--sbatch-arg", sweep.sbatch_args,
+                        "With --submit: an sbatch option for the script, e.g. "
+                        "--sbatch-arg=--partition=short (repeatable)");
+  sweep_cmd
+      ->add_option("--max-running", sweep.max_running,
+                   "With --submit: at most K array tasks at once (the array's %K)")
+      ->check(CLI::PositiveNumber);
+
+  cb::MergeOptions merge;
+  auto* merge_cmd = app.add_subcommand(
+      "merge", "Shards of a sweep into one CSV in grid order, checked: every point exactly once");
+  merge_cmd->add_option("--csv", merge.csv, "Merged CSV (and its record, .json)")->required();
+  merge_cmd->add_option("shards", merge.inputs, "Shard CSVs or the folder holding them")
+      ->required();
+  merge_cmd->add_flag("--quiet,-q", merge.quiet, "No summary line");
 
   // Options every frame-making command shares.
   auto add_frame_options = [](CLI::App* cmd, cb::FrameOptions& f) {
@@ -81,13 +127,23 @@ int main(int argc, char** argv) {
     cmd->add_option("-q,--quality", f.quality,
                     "Preset: l 854x480@15, m 1280x720@30, h 1920x1080@60, k 3840x2160@60");
     cmd->add_option("--view", f.view, "longitudinal, transverse or both");
+    cmd->add_option("--theme", f.theme,
+                    "dark (projector; default) or light (white: handouts, papers)")
+        ->check(CLI::IsMember({"dark", "light"}));
+    cmd->add_option("--zoom", f.zoom,
+                    "Springs to draw across the panel: J0:J1, auto[:W] (follow the most strained "
+                    "W springs) or break[:W] (centre on the first break)");
+    cmd->add_option("--caption", f.caption, "A line of text under the chain");
     cmd->add_option("--gl", f.gl,
                     "OpenGL backend: auto, osmesa or egl (default: $CHAINBREAK_GL or auto)");
   };
 
   cb::SnapshotOptions snap;
   auto* snap_cmd = app.add_subcommand("snapshot", "PNG frames of a scene at exact times");
-  snap_cmd->add_option("scene", snap.scene, "Scene file (scenes/*.toml)")->required();
+  snap_cmd
+      ->add_option("scene", snap.scenes, "Scene file (scenes/*.toml); 2-4 scenes are stacked")
+      ->required()
+      ->expected(1, 4);
   snap_cmd->add_option("--at", snap.at, "Times tau, comma-separated, e.g. --at 0,30,60.5")
       ->required();
   snap_cmd->add_option("-o,--out", snap.out_dir, "Folder for the PNGs (default renders)");
@@ -100,7 +156,11 @@ int main(int argc, char** argv) {
   cb::RenderOptions render;
   auto* render_cmd =
       app.add_subcommand("render", "The whole run as a video (MP4, WebM, GIF) or PNG frames");
-  render_cmd->add_option("scene", render.scene, "Scene file (scenes/*.toml)")->required();
+  render_cmd
+      ->add_option("scene", render.scenes,
+                   "Scene file (scenes/*.toml); 2-4 scenes render side by side on one clock")
+      ->required()
+      ->expected(1, 4);
   render_cmd->add_option(
       "-o,--output", render.output,
       "Video file: .mp4 (H.264), .webm (VP9) or .gif (default renders/<scene>.mp4)");
@@ -127,18 +187,28 @@ int main(int argc, char** argv) {
       ->add_option("--overlay", render.overlay,
                    "Overlay parts to draw: hud,plots,spacetime,modes (any subset), all or none")
       ->excludes(no_overlay);
+  render_cmd->add_option("--slowmo", render.slowmo,
+                         "Slow motion around every break: F x the speed (0 < F < 1, e.g. 0.1)");
+  render_cmd->add_option("--title-card", render.title_card,
+                         "Open the video with S seconds of title, parameters and the question")
+      ->check(CLI::Range(0.0, 60.0));
+  render_cmd->add_option("--slowmo-window", render.slowmo_window,
+                         "Slow motion within +-W tau of each break (default 2)")
+      ->check(CLI::PositiveNumber);
   add_frame_options(render_cmd, render.frame);
 
   cb::FiguresOptions figures;
-  auto* figures_cmd = app.add_subcommand(
-      "figures", "The paper's Figs. 3-5 and two breaking maps as PNG + CSV (numbers behind them)");
+  auto* figures_cmd = app.add_subcommand("figures",
+                                         "The paper's Figs. 3-5 and two breaking maps as PNG, SVG "
+                                         "and/or PDF + CSV (numbers behind them)");
   figures_cmd->add_option("-o,--out", figures.out_dir, "Folder (default renders/figures)");
   figures_cmd->add_option("--only", figures.only, "Comma-separated names, e.g. fig4a,breaking_map");
   figures_cmd
       ->add_option("--jobs,-j", figures.jobs, "Threads for the RK4 maps (default: all cores)")
       ->check(CLI::NonNegativeNumber);
-  figures_cmd->add_option("--gl", figures.frame.gl, "OpenGL backend: auto, osmesa or egl")
-      ->check(CLI::IsMember({"auto", "osmesa", "egl"}));
+  figures_cmd->add_option("--theme", figures.theme, "light (default, paper style) or dark");
+  figures_cmd->add_option("--format", figures.formats,
+                          "Formats, any of png,svg,pdf comma-separated (default png)");
   figures_cmd->add_flag("--quiet,-q", figures.quiet, "No progress output");
 
   // `view`: the rest of the line goes to the viewer executable, --help included.
@@ -156,6 +226,7 @@ int main(int argc, char** argv) {
   }
 
   try {
+    cb::active_simd();  // a bad CHAINBREAK_SIMD is a user error before any work
     const auto overrides = parse_overrides(sets);
     if (run_cmd->parsed()) {
       run.overrides = overrides;
@@ -163,10 +234,12 @@ int main(int argc, char** argv) {
     }
     if (snap_cmd->parsed()) {
       snap.overrides = overrides;
+      snap.scene = snap.scenes.front();
       return cb::snapshot_command(snap);
     }
     if (render_cmd->parsed()) {
       render.overrides = overrides;
+      render.scene = render.scenes.front();
       return cb::render_command(render);
     }
     if (figures_cmd->parsed()) return cb::figures_command(figures);
@@ -175,13 +248,32 @@ int main(int argc, char** argv) {
       view.args = view_cmd->remaining();
       return cb::view_command(view);
     }
+    if (merge_cmd->parsed()) return cb::merge_command(merge);
     sweep.overrides = overrides;
+    // The grid's axes in the order they were typed: the first varies slowest.
+    std::size_t next_vary = 0, next_values = 0;
+    for (const CLI::Option* opt : sweep_cmd->parse_order()) {
+      if (opt == vary_opt) sweep.axes.push_back("--vary " + varies.at(next_vary++));
+      if (opt == values_opt) sweep.axes.push_back("--values " + values.at(next_values++));
+    }
     return cb::sweep_command(sweep);
+  } catch (const cb::Interrupted&) {
+    return cb::interrupted_status("nothing written");
   } catch (const cb::SceneError& e) {
     return user_error(e.what(), "");
+  } catch (const cb::ResourceError& e) {
+    return user_error(e.what(), "chainbreak: ");
   } catch (const cb::DriveError& e) {
     return user_error(e.what(), "");
+  } catch (const cb::GridError& e) {
+    return user_error(e.what(), "chainbreak: ");
+  } catch (const cb::MergeError& e) {
+    return user_error(e.what(), "chainbreak merge: ");
   } catch (const cb::OutputError& e) {
+    return user_error(e.what(), "chainbreak: ");
+  } catch (const cb::SimdChoiceError& e) {
+    return user_error(e.what(), "chainbreak: ");
+  } catch (const cb::GlOptionError& e) {
     return user_error(e.what(), "chainbreak: ");
   } catch (const cb::GlError& e) {
     std::fprintf(stderr, "chainbreak: %s\n", e.what());

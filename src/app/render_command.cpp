@@ -19,11 +19,13 @@
 #include "app/frames.h"
 #include "app/progress.h"
 #include "app/render_plan.h"
+#include "app/run_set.h"
 #include "output/frame_writer.h"
 #include "output/output_file.h"
 #include "output/output_lock.h"
 #include "output/video_encoder.h"
 #include "overlay/overlay.h"
+#include "resources/resources.h"
 
 namespace cb {
 
@@ -32,22 +34,20 @@ namespace {
 // The physics side of the pipeline, on its own thread: each frame's snapshot into the queue.
 // Stops early on interruption or a non-finite state.
 struct Producer {
-  FrameSource& source;
+  RunSet& runs;
   std::int64_t frames;
   BoundedQueue<RenderSnapshot>& queue;
   std::string error;
-  std::vector<BreakEvent> breaks;
 
   void operator()() {
     for (std::int64_t k = 0; k < frames && !g_interrupted; ++k) {
-      std::optional<RenderSnapshot> snap = source.frame(k);
+      std::optional<RenderSnapshot> snap = runs.frame(k);
       if (!snap) {
-        error = source.error();
+        if (!g_interrupted) error = runs.error();
         break;
       }
       if (!queue.push(std::move(*snap))) break;
     }
-    breaks = source.state().breaks;
     queue.close();
   }
 };
@@ -64,11 +64,43 @@ std::unique_ptr<FrameSink> open_sink(const RenderOptions& o, const SceneDesc& sc
   return std::make_unique<VideoEncoder>(plan.output, v);
 }
 
+// Frames in flight: the snapshot queue (3) and the sink's pictures (read back, converting,
+// encoding: at most 8 of them at once), each w x h x 4 bytes; and the physics.
+MemoryEstimate render_memory(const SceneDesc& scene, const RenderPlan& plan) {
+  const double beads = scene.chain.beads;
+  const double frame_bytes = 4.0 * plan.frame.width * plan.frame.height;
+  MemoryEstimate m;
+  m.needs.push_back({"RK4 state", 2 * rk4_bytes(beads)});  // the pre-pass and the render
+  m.needs.push_back({"frames in flight", 8 * frame_bytes});
+  m.needs.push_back({"snapshots in flight", 3 * 64 * beads});
+  return m;
+}
+
 }  // namespace
 
+int render_scenes(std::vector<SceneDesc> scenes, const RenderOptions& o);
+
 int render_command(const RenderOptions& o) {
-  const SceneDesc scene = load_scene(o.scene, o.overrides);
-  RenderPlan plan = plan_render(scene, o);
+  std::vector<SceneDesc> scenes;
+  // The same --set applies to every scene of a side-by-side video.
+  for (const std::string& path : o.scenes.empty() ? std::vector<std::string>{o.scene} : o.scenes)
+    scenes.push_back(load_scene(path, o.overrides));
+  return render_scenes(std::move(scenes), o);
+}
+
+int render_scene(const SceneDesc& scene, const RenderOptions& o) {
+  return render_scenes({scene}, o);
+}
+
+int render_scenes(std::vector<SceneDesc> scenes, const RenderOptions& o) {
+  choose_gl_backend(o.frame.gl);  // a misspelled backend fails now, not after the pre-pass
+  RunSet runs(std::move(scenes), o);  // each plan refuses too many frames before any work
+  const SceneDesc& scene = runs.scene(0);
+  const RenderPlan& plan = runs.plan();
+  const MachineMemory machine = machine_memory();
+  const MemoryEstimate memory = render_memory(scene, plan);
+  require_memory(memory, machine, "render " + scene.name,
+                 "use fewer beads (chain.beads) or a smaller frame (--size, -q l)");
   // The default folder is made on demand; a dry run only checks it could be.
   const bool default_folder = o.output.empty() && o.frames_dir.empty();
   if (default_folder && !std::filesystem::exists("renders")) {
@@ -86,9 +118,13 @@ int render_command(const RenderOptions& o) {
   // so the video (or PNGs) and the JSON sidecar always come from the same run.
   std::optional<OutputLock> lock;
   if (!o.dry_run) lock.emplace(sidecar_path(scene, plan));
-  measure_plan(scene, plan);
+  runs.measure();
   if (o.dry_run) {
-    std::printf("%s\n", plan_json(scene, plan, "", {}).c_str());
+    std::string json = runs.json("");
+    json.pop_back();  // the closing brace: the estimate joins the plan
+    std::printf("%s,\"memory\":%s,\"memory_available_bytes\":%.0f,\"memory_source\":\"%s\"}\n",
+                json.c_str(), memory.json().c_str(), machine.available_bytes,
+                machine.source.c_str());
     return 0;  // the sink's destructor removes its temporary file
   }
   Canvas canvas = make_canvas(o.frame, plan.frame.width, plan.frame.height);
@@ -97,21 +133,23 @@ int render_command(const RenderOptions& o) {
   std::unique_ptr<Overlay> overlay;
   if (plan.overlay_layout.enabled)
     overlay = std::make_unique<Overlay>(plan.frame.width, plan.frame.height, plan.frame.fps,
-                                        plan.overlay);
+                                        plan.overlay, plan.style.theme);
   if (!o.quiet) {
     std::fprintf(stderr, "render %s: %lld frames %dx%d at %g fps (%g tau/s, dt %g) -> %s\n",
-                 scene.name.c_str(), static_cast<long long>(plan.frames), plan.frame.width,
-                 plan.frame.height, plan.frame.fps, plan.frame.speed, plan.dt, plan.output.c_str());
+                 scene.name.c_str(), static_cast<long long>(runs.frames()), plan.frame.width,
+                 plan.frame.height, plan.frame.fps, plan.frame.speed, plan.grid.dt(),
+                 plan.output.c_str());
     if (plan.overlay.any() && !plan.overlay_layout.enabled)
       std::fprintf(stderr, "render %s: no overlay below %dx%d (its text would not be readable)\n",
                    scene.name.c_str(), kOverlayMinWidth, kOverlayMinHeight);
   }
 
   BoundedQueue<RenderSnapshot> snapshots(3);
-  FrameSource source(scene, plan, o.threads);
-  Producer producer{source, plan.frames, snapshots, {}, {}};
+  runs.start(o.threads);
+  Producer producer{runs, runs.frames(), snapshots, {}};
   std::thread physics(std::ref(producer));
-  Progress progress("render " + scene.name, static_cast<double>(plan.frames), o.quiet, "frames");
+  Progress progress("render " + scene.name, static_cast<double>(runs.frames()), o.quiet,
+                    "frames");
   std::int64_t done = 0;
   // Video sinks take Y'CbCr converted here, as the pixels are read: less CPU per frame than
   // the encoder's own conversion (output/yuv420.h says why that matters).
@@ -130,6 +168,7 @@ int render_command(const RenderOptions& o) {
         sink->push(std::move(image));
       }
       progress.update(static_cast<double>(++done));
+      if (o.on_frame) o.on_frame(done, runs.frames());
     }
   } catch (...) {
     snapshots.close();
@@ -147,20 +186,21 @@ int render_command(const RenderOptions& o) {
     if (video) {
       const std::string partial = video->abort_partial();
       if (partial.empty())
-        std::fprintf(stderr, "chainbreak: interrupted before the first frame; nothing written\n");
+        interrupted_status("before the first frame; nothing written");
       else
-        std::fprintf(stderr,
-                     "chainbreak: interrupted after %lld frames; what was rendered plays as %s\n",
-                     static_cast<long long>(done), partial.c_str());
+        interrupted_status("after " + std::to_string(done) +
+                           " frames; what was rendered plays as " + partial);
     } else {
       sink->finish();
-      std::fprintf(stderr, "chainbreak: interrupted after %lld frames (complete PNGs kept in %s)\n",
-                   static_cast<long long>(done), o.frames_dir.c_str());
+      interrupted_status("after " + std::to_string(done) + " frames (complete PNGs kept in " +
+                         o.frames_dir + ")");
     }
-    return 130;
+    return interrupt_status();
   }
   sink->finish();
-  write_sidecar(scene, plan, gl, producer.breaks);
+  OutputFile sidecar(sidecar_path(scene, plan));
+  sidecar.write(runs.json(gl) + "\n");
+  sidecar.commit();
   if (!o.quiet)
     std::fprintf(stderr, "render %s: wrote %s\n", scene.name.c_str(), plan.output.c_str());
   std::printf("%s\n", plan.output.c_str());

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "app/frame_grid.h"
 #include "app/frames.h"
 #include "overlay/overlay_history.h"
 #include "overlay/overlay_layout.h"
@@ -14,12 +15,12 @@
 namespace cb {
 
 struct RenderPlan {
-  RenderDesc frame;            // size, fps, speed, view after options
-  double tau_per_frame = 0.0;  // speed / fps
-  std::int64_t substeps = 1;   // integrator steps per frame
-  double dt = 0.0;             // tau_per_frame / substeps (never above the scene's dt)
-  std::int64_t frames = 0;     // frame k shows tau = k * tau_per_frame
-  RunExtent extent;            // what keeps the chain in the frame; where the run stops
+  RenderDesc frame;  // size, fps, speed, view after options
+  // The frame clock: frame k shows the chain at the integrator's step grid.step(k), with the
+  // step dt = grid.dt() (never above the scene's). Laid out by measure_plan.
+  FrameGrid grid;
+  std::int64_t title_frames = 0;  // title card frames before the grid's first (--title-card)
+  RunExtent extent;  // what keeps the chain in the frame; where the run stops
   SnapshotStyle style;
   // The overlay: the parts asked for (scene [render], then --overlay / --no-overlay), where
   // they go (disabled when none is on or the frame is under 640x360) and what the physics
@@ -41,11 +42,9 @@ void measure_plan(const SceneDesc& scene, RenderPlan& plan);
 // The JSON sidecar: scene, parameters after overrides, frames, timing, codec, GL, breaks.
 std::string plan_json(const SceneDesc& scene, const RenderPlan& plan, const std::string& gl,
                       const std::vector<BreakEvent>& breaks);
-// Where the JSON sidecar of the plan's output goes (out.mp4 -> out.json; a PNG folder ->
-// FOLDER/<scene>.json). Also the name `render` locks (output/output_lock.h).
+// The breaks as the sidecar lists them: spring, tau and the first video frame that shows it.
+std::string breaks_json(const RenderPlan& plan, const std::vector<BreakEvent>& breaks);
+// The sidecar's path for a plan: "<video stem>.json" or "<folder>/<scene>.json".
 std::string sidecar_path(const SceneDesc& scene, const RenderPlan& plan);
-// Writes plan_json there.
-void write_sidecar(const SceneDesc& scene, const RenderPlan& plan, const std::string& gl,
-                   const std::vector<BreakEvent>& breaks);
 
 }  // namespace cb

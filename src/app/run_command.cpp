@@ -1,52 +1,42 @@
 // `chainbreak run`: one scene, one solver, a CSV of the chain over time and a JSON summary.
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <optional>
 
 #include "app/commands.h"
 #include "app/csv.h"
 #include "app/progress.h"
-#include "exact/continuum.h"
-#include "exact/exact_chain.h"
-#include "exact/first_break.h"
+#include "app/run_rows.h"
 #include "output/output_file.h"
 #include "physics/energy.h"
-#include "physics/integrator.h"
+#include "resources/resources.h"
 
 namespace cb {
 
 namespace {
 
-// The chain at one tau, whoever computed it.
-struct Sample {
-  double tau = 0.0, f = 0.0;
-  std::vector<double> psi, vel, phi;
-  EnergyParts energy;
-};
-
-// The CSV contract: tau,f,energy,kinetic,potential,phi_1..phi_N[,psi_1..psi_N]; energies
-// per particle as in Eq. (energy) (the chain's energy in units K l^2 divided by N^3).
-class CsvTable {
+// The CSV contract: tau,f,energy,kinetic,potential,phi_1..phi_N[,psi_1..psi_N]; the numbers
+// of each RunRow (run_rows.h) in shortest round-trip form.
+class CsvTable : public RowSink {
  public:
-  CsvTable(const std::string& path, int beads, bool with_psi)
-      : file_(path), beads_(beads), with_psi_(with_psi) {
+  CsvTable(const std::string& path, int beads, bool with_psi) : file_(path) {
     std::string header = "tau,f,energy,kinetic,potential";
     for (int j = 1; j <= beads; ++j) header += ",phi_" + std::to_string(j);
     if (with_psi)
       for (int j = 1; j <= beads; ++j) header += ",psi_" + std::to_string(j);
     file_.write(header + "\n");
   }
-  void row(const Sample& s) {
-    for (double v :
-         {s.tau, s.f, per_particle(s.energy.total(), beads_),
-          per_particle(s.energy.kinetic, beads_), per_particle(s.energy.potential, beads_)}) {
+  void begin(int, bool, std::int64_t) override {}
+  void row(const RunRow& r) override {
+    for (double v : {r.tau, r.f, r.energy, r.kinetic, r.potential}) {
       append_number(buffer_, v);
       buffer_ += ',';
     }
-    for (double v : s.phi) append_number(buffer_, v), buffer_ += ',';
-    if (with_psi_)
-      for (double v : s.psi) append_number(buffer_, v), buffer_ += ',';
+    for (double v : *r.phi) append_number(buffer_, v), buffer_ += ',';
+    if (r.psi)
+      for (double v : *r.psi) append_number(buffer_, v), buffer_ += ',';
     buffer_.back() = '\n';
     if (buffer_.size() > (1u << 20)) flush();
   }
@@ -61,17 +51,8 @@ class CsvTable {
     buffer_.clear();
   }
   OutputFile file_;
-  int beads_;
-  bool with_psi_;
   std::string buffer_;
 };
-
-EnergyParts energy_of(const std::vector<double>& vel, const std::vector<double>& phi) {
-  EnergyParts e;
-  for (double v : vel) e.kinetic += 0.5 * v * v;
-  for (double p : phi) e.potential += 0.5 * p * p;
-  return e;
-}
 
 std::string breaks_json(const std::vector<BreakEvent>& breaks, const std::optional<Units>& units) {
   std::string out = "[";
@@ -84,15 +65,8 @@ std::string breaks_json(const std::vector<BreakEvent>& breaks, const std::option
   return out + "]";
 }
 
-struct RunResult {
-  std::int64_t steps = 0;
-  double tau_end = 0.0;
-  std::vector<BreakEvent> breaks;
-  std::optional<ChainState> final_state;  // rk4 only: for the energy books
-};
-
-int finish(const RunOptions& o, const SceneDesc& scene, const RunResult& r,
-           std::optional<FirstBreak> exact_break) {
+int finish(const RunOptions& o, const SceneDesc& scene, const RunOutcome& r) {
+  const std::optional<FirstBreak>& exact_break = r.exact_break;
   std::string j =
       "{\"scene\":" + json_string(scene.name) + ",\"title\":" + json_string(scene.title);
   j += ",\"solver\":" + json_string(o.solver);
@@ -102,6 +76,7 @@ int finish(const RunOptions& o, const SceneDesc& scene, const RunResult& r,
        (scene.chain.breakable() ? number_text(scene.chain.threshold) : std::string("null"));
   j += ",\"drive\":" + json_string(drive_type_name(scene.drive.type));
   j += ",\"dt\":" + number_text(scene.integrator.dt);
+  if (r.simd) j += ",\"simd\":" + json_string(simd_name(*r.simd));
   j += ",\"breaks\":" + breaks_json(r.breaks, scene.units);
   j += ",\"steps\":" + std::to_string(r.steps) + ",\"tau_end\":" + number_text(r.tau_end);
   if (r.final_state) {
@@ -133,125 +108,106 @@ int finish(const RunOptions& o, const SceneDesc& scene, const RunResult& r,
   return 0;
 }
 
-// The last step of the run: t_end, or after_break past the first break.
+// The last step of the run at most (after_break may end it earlier).
 std::int64_t planned_steps(const SceneDesc& s) {
   return std::llround(s.integrator.t_end / s.integrator.dt);
 }
 
-int run_rk4(const RunOptions& o, const SceneDesc& scene, CsvTable* csv) {
-  const double dt = scene.integrator.dt;
-  Integrator sim(scene.chain, make_forcing(scene.drive), {dt, o.threads});
-  std::int64_t last = planned_steps(scene);
-  Progress progress("run " + scene.name, static_cast<double>(last), o.quiet);
-  Sample sample;
-  const int n = scene.chain.beads;
-  sample.phi.resize(n);
-  auto write_row = [&] {
-    const ChainState& s = sim.state();
-    sample.tau = s.tau;
-    sample.f = sim.force_now();
-    for (int j = 1; j <= n; ++j) sample.phi[j - 1] = extension(s, j);
-    sample.psi = s.psi;
-    sample.energy = energy(s);
-    csv->row(sample);
-  };
-  bool stop_set = false;
-  for (;;) {
-    if (csv && sim.state().step % o.every == 0) write_row();
-    if (sim.state().step >= last) break;
-    if (g_interrupted) {
-      std::fprintf(stderr, "chainbreak: interrupted at tau = %g; no CSV written\n",
-                   sim.state().tau);
-      return 130;
-    }
-    if (!sim.step()) {
-      std::fprintf(stderr, "chainbreak: %s\n", sim.error().c_str());
-      return 1;
-    }
-    if (!stop_set && !sim.state().breaks.empty() && scene.integrator.after_break) {
-      const double stop_tau = sim.state().breaks.front().tau + *scene.integrator.after_break;
-      last = std::min(last, static_cast<std::int64_t>(std::ceil(stop_tau / dt - 1e-9)));
-      stop_set = true;
-    }
-    progress.update(static_cast<double>(sim.state().step));
+// What the run will hold in memory and write, before any of it is allocated (rows 1-2 of
+// issue #12: a billion beads used to grow until the kernel killed the process).
+struct RunNeeds {
+  MemoryEstimate memory;
+  double csv_rows = 0, csv_bytes = 0;
+};
+
+RunNeeds run_needs(const RunOptions& o, const SceneDesc& scene) {
+  RunNeeds n;
+  const double beads = scene.chain.beads;
+  if (o.solver == "rk4") {
+    n.memory.needs.push_back({"RK4 state", rk4_bytes(beads)});
+  } else {
+    // A row's psi, velocity and phi, and the continuum's two neighbours in time.
+    n.memory.needs.push_back({"solver rows", 6 * 8 * beads});
+    if (o.solver == "exact") n.memory.needs.push_back({"exact tables", exact_table_bytes(beads)});
   }
-  if (csv) csv->commit();
-  RunResult r;
-  r.steps = sim.state().step;
-  r.tau_end = sim.state().tau;
-  r.breaks = sim.state().breaks;
-  r.final_state = sim.state();
-  return finish(o, scene, r, std::nullopt);
+  if (!o.csv.empty()) {
+    const double columns = 5 + beads * (o.psi ? 2 : 1);
+    n.csv_rows = std::floor(static_cast<double>(planned_steps(scene)) / o.every) + 1;
+    n.csv_bytes = n.csv_rows * csv_row_bytes(columns);
+    // The header, and the buffer of rows flushed past 1 MB (CsvTable::row).
+    n.memory.needs.push_back(
+        {"CSV header and row buffer", 2 * csv_row_bytes(columns) + (1u << 20)});
+  }
+  return n;
 }
 
-// Exact and continuum formulas at the rk4 grid's times (every `every` steps), no breaking.
-int run_formula(const RunOptions& o, const SceneDesc& scene, CsvTable* csv) {
-  const int n = scene.chain.beads;
-  const double dt = scene.integrator.dt;
-  const std::int64_t last = planned_steps(scene);
-  const bool exact = o.solver == "exact";
-  std::unique_ptr<ExactChain> chain;
-  if (exact) chain = std::make_unique<ExactChain>(n, scene.chain.gamma, scene.drive);
-  const Forcing forcing = make_forcing(scene.drive);
-  auto f = [&](double tau) { return forcing(tau); };
-  Sample s;
-  s.psi.resize(n);
-  s.vel.resize(n);
-  s.phi.resize(n);
-  // Continuum: phi from Eq. (sum); psi by summing phi; psi' by a central difference.
-  std::vector<double> before(n), after(n);
-  auto continuum_psi = [&](double tau, std::vector<double>& psi, std::vector<double>* phi) {
-    double sum = 0.0;
-    for (int j = 1; j <= n; ++j) {
-      const double p = continuum_phi_sum(n, j, tau, f);
-      if (phi) (*phi)[j - 1] = p;
-      sum += p;
-      psi[j - 1] = sum;
-    }
-  };
-  Progress progress("run " + scene.name, static_cast<double>(last), o.quiet);
-  for (std::int64_t step = 0; csv && step <= last; step += o.every) {
-    if (g_interrupted) return 130;
-    s.tau = static_cast<double>(step) * dt;
-    s.f = f(s.tau);
-    if (exact) {
-      chain->evaluate(s.tau, &s.psi, &s.vel, &s.phi, nullptr);
-    } else {
-      constexpr double kDelta = 1e-4;
-      continuum_psi(s.tau, s.psi, &s.phi);
-      continuum_psi(s.tau + kDelta, after, nullptr);
-      continuum_psi(std::max(0.0, s.tau - kDelta), before, nullptr);
-      const double span = s.tau + kDelta - std::max(0.0, s.tau - kDelta);
-      for (int i = 0; i < n; ++i) s.vel[i] = (after[i] - before[i]) / span;
-    }
-    s.energy = energy_of(s.vel, s.phi);
-    csv->row(s);
-    progress.update(static_cast<double>(step));
-  }
-  if (csv) csv->commit();
-  RunResult r;
-  r.steps = last;
-  r.tau_end = static_cast<double>(last) * dt;
-  std::optional<FirstBreak> first;
-  // The exact first break needs closed forms: not available for an expr drive.
-  if (exact && scene.chain.breakable() && scene.drive.type != DriveType::Expr)
-    first = exact_first_break(scene.chain, scene.drive, r.tau_end);
-  return finish(o, scene, r, first);
+std::string run_plan_json(const RunOptions& o, const SceneDesc& scene, const RunNeeds& n,
+                          const MachineMemory& machine) {
+  std::string j = "{\"scene\":" + json_string(scene.name) + ",\"solver\":" + json_string(o.solver);
+  j += ",\"beads\":" + std::to_string(scene.chain.beads) +
+       ",\"steps\":" + std::to_string(planned_steps(scene));
+  j += ",\"csv\":" + (o.csv.empty() ? std::string("null") : json_string(o.csv));
+  j += ",\"csv_rows\":" + number_text(n.csv_rows) +
+       ",\"csv_bytes\":" + number_text(std::ceil(n.csv_bytes));
+  j += ",\"memory\":" + n.memory.json();
+  j += ",\"memory_available_bytes\":" + number_text(machine.available_bytes) +
+       ",\"memory_source\":" + json_string(machine.source) + "}";
+  return j;
+}
+
+// The CSV must fit on its disk: an estimate (at most 25 bytes a number) against the free
+// space of the folder it goes to.
+void require_disk(const RunOptions& o, const RunNeeds& n) {
+  if (o.csv.empty()) return;
+  std::error_code error;
+  const auto dir = std::filesystem::absolute(o.csv, error).parent_path();
+  const auto space = std::filesystem::space(dir, error);
+  if (error || static_cast<double>(space.available) >= n.csv_bytes) return;
+  throw ResourceError(
+      "run: the CSV " + o.csv + " would take up to about " + format_bytes(n.csv_bytes) + " (" +
+      number_text(n.csv_rows) + " rows), more than the " +
+      format_bytes(static_cast<double>(space.available)) + " free in " + dir.string() +
+      "; write fewer rows (--every K), a shorter run (t_end), or " + "write elsewhere");
 }
 
 }  // namespace
 
 int run_command(const RunOptions& o) {
   const SceneDesc scene = load_scene(o.scene, o.overrides);
-  if (o.every < 1) throw SceneError("--every " + std::to_string(o.every) + ": must be 1 or more");
-  if (o.solver == "continuum" && scene.drive.type == DriveType::Impulses)
-    throw SceneError(scene.path +
-                     ": the continuum formula Eq. (sum) needs a drive with values; impulses are "
-                     "delta functions. Use --solver exact or rk4");
+  RunRequest request;
+  request.solver = o.solver;
+  request.every = o.every;
+  request.psi = o.psi;
+  request.threads = o.threads;
+  request.stop = &g_interrupted;
+  check_run_request(scene, request);
+  const RunNeeds needs = run_needs(o, scene);
+  const MachineMemory machine = machine_memory();
+  require_memory(needs.memory, machine, "run " + scene.name,
+                 "use fewer beads (chain.beads)" +
+                     std::string(o.solver == "exact" ? ", or --solver rk4 (no N x N tables)" : ""));
+  require_disk(o, needs);
+  if (o.dry_run) {
+    if (!o.csv.empty()) check_output_path(o.csv, "out.csv");
+    std::printf("%s\n", run_plan_json(o, scene, needs, machine).c_str());
+    return 0;
+  }
   std::unique_ptr<CsvTable> csv;
   if (!o.csv.empty()) csv = std::make_unique<CsvTable>(o.csv, scene.chain.beads, o.psi);
-  if (o.solver == "rk4") return run_rk4(o, scene, csv.get());
-  return run_formula(o, scene, csv.get());
+  Progress progress("run " + scene.name,
+                    static_cast<double>(std::llround(scene.integrator.t_end / scene.integrator.dt)),
+                    o.quiet);
+  request.on_progress = [&](double steps) { progress.update(steps); };
+  const RunOutcome outcome = run_scene(scene, request, csv.get());
+  if (outcome.status == 130)
+    return interrupted_status("stopped at tau = " + number_text(outcome.tau_end) +
+                              "; no CSV written");
+  if (outcome.status != 0) {
+    std::fprintf(stderr, "chainbreak: %s\n", outcome.error.c_str());
+    return outcome.status;
+  }
+  if (csv) csv->commit();
+  return finish(o, scene, outcome);
 }
 
 }  // namespace cb

@@ -9,15 +9,24 @@
 #include "app/frame_source.h"
 #include "app/frames.h"
 #include "app/option_parsers.h"
+#include "app/zoom.h"
 #include "app/render_plan.h"
+#include "app/snapshot_images.h"
 #include "output/frame_writer.h"
 #include "output/png_writer.h"
 #include "overlay/overlay.h"
 #include "physics/integrator.h"
+#include "resources/resources.h"
 
 namespace cb {
 
 namespace {
+
+// What an interrupted snapshot leaves: the PNGs written whole before it.
+std::string done_text(std::size_t written) {
+  return written == 0 ? std::string("nothing written")
+                      : std::to_string(written) + " PNG(s) written before it are complete";
+}
 
 // "<scene>_tau_000123.450.png": zero-padded so that names sort by time.
 std::string snapshot_name(const std::string& scene, double tau) {
@@ -38,10 +47,11 @@ constexpr double kFrameSlack = 1e-6;
 
 // With an overlay: the video's frames at those times, made as `render` makes them (its plan,
 // its FrameSource, its Overlay), so that a PNG equals the video's frame pixel for pixel.
-int overlay_snapshots(const SnapshotOptions& o, const SceneDesc& scene,
-                      const std::vector<double>& times) {
+int overlay_images(const SnapshotRequest& o, const SceneDesc& scene,
+                   const SnapshotConsumer& consume, std::string& error) {
+  const std::vector<double>& times = o.times;
   RenderOptions ro;
-  ro.frames_dir = o.out_dir;  // PNGs: no video codec to check
+  ro.frames_dir = ".";  // PNGs: no video codec to check
   ro.frame = o.frame;
   ro.overlay = o.overlay;
   RenderPlan plan = plan_render(scene, ro);
@@ -51,44 +61,46 @@ int overlay_snapshots(const SnapshotOptions& o, const SceneDesc& scene,
                                                std::to_string(kOverlayMinWidth) + "x" +
                                                std::to_string(kOverlayMinHeight) + ")"
                                          : std::string("no part switched on")));
-  require_writable_dir(o.out_dir);
   measure_plan(scene, plan);
   std::vector<std::int64_t> frames;
+  const FrameGrid& grid = plan.grid;
+  const double last_tau = grid.tau(grid.frames() - 1);
   for (double tau : times) {
-    const double k = tau / plan.tau_per_frame;
-    const auto frame = static_cast<std::int64_t>(std::llround(k));
-    if (std::abs(k - static_cast<double>(frame)) > kFrameSlack)
-      throw SceneError("--at " + o.at + ": with --overlay each tau must be a frame time of the " +
-                       "video, a multiple of speed / fps = " + number(plan.tau_per_frame) +
-                       "; nearest to " + number(tau) + ": " +
-                       number(std::floor(k) * plan.tau_per_frame) + " or " +
-                       number(std::ceil(k) * plan.tau_per_frame) +
-                       " (or change the frame times with --set render.fps=... / render.speed=...)");
-    if (frame >= plan.frames)
-      throw SceneError("--at " + o.at + ": tau " + number(tau) +
-                       " is past the video's last frame (tau " +
-                       number(static_cast<double>(plan.frames - 1) * plan.tau_per_frame) +
+    // The frame clock (frame_grid.h) says which times are frames: within kFrameSlack of a
+    // frame's step, in units of the normal frame step.
+    const std::int64_t frame = grid.frame_at(tau, kFrameSlack * grid.tau_per_frame());
+    if (tau > last_tau + kFrameSlack * grid.tau_per_frame())
+      throw SceneError("--at " + o.at_text + ": tau " + number(tau) +
+                       " is past the video's last frame (tau " + number(last_tau) +
                        "; see integrator.t_end and after_break)");
+    if (frame < 0) {
+      const std::int64_t after = grid.first_frame_at_or_after(tau);
+      throw SceneError("--at " + o.at_text + ": with --overlay each tau must be a frame time of the " +
+                       "video (every speed / fps = " + number(grid.tau_per_frame()) +
+                       " of tau, closer in slow motion); nearest to " + number(tau) + ": " +
+                       number(grid.tau(std::max<std::int64_t>(0, after - 1))) + " or " +
+                       number(grid.tau(after)) +
+                       " (or change the frame times with --set render.fps=... / render.speed=...)");
+    }
     frames.push_back(frame);
   }
   Canvas canvas = make_canvas(o.frame, plan.frame.width, plan.frame.height);
-  Overlay overlay(plan.frame.width, plan.frame.height, plan.frame.fps, plan.overlay);
+  Overlay overlay(plan.frame.width, plan.frame.height, plan.frame.fps, plan.overlay,
+                  plan.style.theme);
   FrameSource source(scene, plan, 1);
   for (std::size_t i = 0; i < times.size(); ++i) {
-    if (g_interrupted) return 130;
+    if (o.stop && *o.stop) return interrupt_status();
     const std::optional<RenderSnapshot> snap = source.frame(frames[i]);
+    if (!snap && g_interrupted) return interrupt_status();
     if (!snap) {
-      std::fprintf(stderr, "chainbreak: %s\n", source.error().c_str());
+      error = source.error();
       return 1;
     }
     canvas.renderer->draw(*snap);
     overlay.draw(*snap);
     Image image;
     canvas.renderer->read(image);
-    const std::string path =
-        (std::filesystem::path(o.out_dir) / snapshot_name(scene.name, times[i])).string();
-    write_png(path, image);
-    std::printf("%s\n", path.c_str());
+    consume(times[i], std::move(image));
   }
   return 0;
 }
@@ -104,13 +116,19 @@ void require_distinct_names(const std::string& scene, const std::vector<double>&
                        "; the file names keep 3 decimals, so give times at least 0.001 apart");
 }
 
-int snapshot_command(const SnapshotOptions& o) {
-  const SceneDesc scene = load_scene(o.scene, o.overrides);
-  const std::vector<double> times = parse_times(o.at);
-  require_distinct_names(scene.name, times);
-  if (!o.overlay.empty() && o.overlay != "none") return overlay_snapshots(o, scene, times);
+int snapshot_images(const SceneDesc& scene, const SnapshotRequest& request,
+                    const SnapshotConsumer& consume, std::string& error) {
+  // The requested theme reaches the pictures through the frame options, as --theme does.
+  SnapshotRequest o = request;
+  if (!o.theme.empty()) o.frame.theme = o.theme;
+  // Two runs at most at once (the grid's and an off-grid time's, or the pre-pass), and a frame.
+  MemoryEstimate memory;
+  memory.needs.push_back({"RK4 state", 2 * rk4_bytes(scene.chain.beads)});
+  require_memory(memory, machine_memory(), "snapshot " + scene.name,
+                 "use fewer beads (chain.beads)");
+  if (!o.overlay.empty() && o.overlay != "none") return overlay_images(o, scene, consume, error);
+  const std::vector<double>& times = o.times;
   const RenderDesc frame = frame_settings(scene, o.frame);
-  require_writable_dir(o.out_dir);
   const double dt = scene.integrator.dt;
   const RunExtent extent = measure_run(scene, times.back(), dt);
   const SnapshotStyle style = snapshot_style(scene, frame, extent);
@@ -119,7 +137,7 @@ int snapshot_command(const SnapshotOptions& o) {
   // On-grid times (sorted) share one run; an off-grid time gets a run of its own.
   Integrator grid_run(scene.chain, make_forcing(scene.drive), {dt, 1});
   for (double tau : times) {
-    if (g_interrupted) return 130;
+    if (o.stop && *o.stop) return interrupt_status();
     // The integrator lands exactly on tau: on the scene's grid when tau is a multiple of dt,
     // otherwise with the step shrunk to tau / ceil(tau / dt) (never larger than dt).
     const double steps = tau / dt;
@@ -130,17 +148,48 @@ int snapshot_command(const SnapshotOptions& o) {
     if (!on_grid)
       own_run.emplace(scene.chain, make_forcing(scene.drive), IntegratorOptions{step_dt, 1});
     Integrator& sim = on_grid ? grid_run : *own_run;
-    if (!sim.advance_to(count)) {
-      std::fprintf(stderr, "chainbreak: %s\n", sim.error().c_str());
+    if (!advance_watching(sim, count)) {
+      if (g_interrupted) return interrupt_status();
+      error = sim.error();
       return 1;
     }
-    const RenderSnapshot snap = build_snapshot(sim.state(), scene.chain, sim.force_now(), style);
-    const std::string path =
-        (std::filesystem::path(o.out_dir) / snapshot_name(scene.name, tau)).string();
-    write_png(path, canvas.renderer->render(snap));
-    std::printf("%s\n", path.c_str());
+    // auto / break zoom: a single picture has no camera history, so it settles at once.
+    SnapshotStyle at_tau = style;
+    ZoomCamera camera(parse_zoom(frame.zoom, scene.chain.beads, "--zoom"), scene.chain.beads,
+                      extent.breaks.empty() ? 0 : extent.breaks.front().spring,
+                      extent.breaks.empty() ? -1.0 : extent.breaks.front().tau);
+    camera.frame(sim.state(), at_tau.zoom_first, at_tau.zoom_last, true);
+    const RenderSnapshot snap = build_snapshot(sim.state(), scene.chain, sim.force_now(), at_tau);
+    consume(tau, canvas.renderer->render(snap));
   }
   return 0;
+}
+
+int snapshot_command(const SnapshotOptions& o) {
+  const SceneDesc scene = load_scene(o.scene, o.overrides);
+  SnapshotRequest request;
+  request.times = parse_times(o.at);
+  request.at_text = o.at;
+  request.frame = o.frame;
+  request.overlay = o.overlay;
+  request.stop = &g_interrupted;
+  require_distinct_names(scene.name, request.times);
+  require_writable_dir(o.out_dir);
+  std::string error;
+  std::size_t written = 0;
+  const int status = snapshot_images(
+      scene, request,
+      [&](double tau, Image&& image) {
+        const std::string path =
+            (std::filesystem::path(o.out_dir) / snapshot_name(scene.name, tau)).string();
+        write_png(path, image);
+        std::printf("%s\n", path.c_str());
+        ++written;
+      },
+      error);
+  if (status == 1) std::fprintf(stderr, "chainbreak: %s\n", error.c_str());
+  if (status == 130 || status == 143) return interrupted_status(done_text(written));
+  return status;
 }
 
 }  // namespace cb

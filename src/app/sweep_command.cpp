@@ -1,8 +1,13 @@
-// `chainbreak sweep`: which spring breaks first as one scene key varies.
+// `chainbreak sweep`: which spring breaks first over a grid of scene keys (one or more
+// --vary / --values), the whole grid or one shard of it; with --submit, as a Slurm array
+// (sweep_submit.cpp).
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <algorithm>
-#include <charconv>
-#include <cmath>
+#include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <mutex>
 #include <thread>
 
@@ -10,12 +15,17 @@
 #include "app/csv.h"
 #include "app/option_parsers.h"
 #include "app/progress.h"
+#include "app/sweep_setup.h"
+#include "cluster/shard.h"
 #include "exact/first_break.h"
 #include "figures/break_maps.h"
 #include "output/output_file.h"
 #include "physics/integrator.h"
+#include "resources/resources.h"
 
 namespace cb {
+
+int submit_sweep(const SweepOptions& o, const Grid& grid);  // sweep_submit.cpp
 
 namespace {
 
@@ -30,25 +40,58 @@ FirstBreak first_break_of(const SceneDesc& scene, const std::string& solver) {
   }
 }
 
+// One CSV row: the point's values, then the spring that broke first and when (both empty
+// when nothing broke by t_end).
+void append_row(std::string& text, const std::vector<double>& values, const FirstBreak& b) {
+  for (double v : values) {
+    append_number(text, v);
+    text += ',';
+  }
+  if (b.broke) {
+    text += std::to_string(b.spring) + ",";
+    append_number(text, b.tau);
+  } else {
+    text += ',';
+  }
+  text += '\n';
+}
+
+Shard sweep_shard(const std::string& text) {
+  if (text == "slurm") return shard_from_slurm([](const char* name) { return std::getenv(name); });
+  return parse_shard(text);
+}
+
+std::string host_name() {
+  char buf[256] = {};
+  return ::gethostname(buf, sizeof buf - 1) == 0 ? buf : "";
+}
+
+long peak_memory_kib() {
+  rusage u{};
+  return ::getrusage(RUSAGE_SELF, &u) == 0 ? u.ru_maxrss : 0;
+}
+
 }  // namespace
 
 int sweep_command(const SweepOptions& o) {
   if (o.solver != "rk4" && o.solver != "exact")
     throw SceneError("--solver " + o.solver + ": sweep supports rk4 or exact");
-  const Vary vary = parse_vary(o.vary);
-  const auto [first, last] = parse_shard(o.shard, vary.count);
+  if (record_path(o.csv) == o.csv)
+    throw SceneError("--csv " + o.csv + ": the sweep's record goes to " + o.csv +
+                     " (the CSV's name with .json); name the CSV .csv");
+  const auto start = std::chrono::steady_clock::now();
+  const Grid grid = sweep_grid(o);
+  if (!o.submit.empty()) return submit_sweep(o, grid);
+  if (o.tasks > 0 || o.wait || !o.sbatch_args.empty() || o.max_running > 0)
+    throw GridError(
+        "--tasks, --wait, --sbatch-arg and --max-running go with --submit slurm; "
+        "add --submit slurm, or drop them for a sweep on this machine");
+  const Shard shard = sweep_shard(o.shard);
+  const PointRange range = shard_points(grid.size(), shard);
   // Validate the scene and every value before any work: a bad value fails now, not at row 300.
-  std::vector<SceneDesc> scenes;
-  for (int i = first; i < last; ++i) {
-    auto overrides = o.overrides;
-    overrides.push_back({vary.key, number_text(vary.value(i))});
-    scenes.push_back(load_scene(o.scene, overrides));
-    if (o.solver == "exact" && scenes.back().drive.type == DriveType::Expr)
-      throw SceneError(
-          o.scene +
-          ": the exact first break has no closed form for an expr drive; use --solver rk4");
-  }
+  const std::vector<SceneDesc> scenes = point_scenes(o, grid, range);
   OutputFile out(o.csv);
+  OutputFile out_record(record_path(o.csv));
   std::vector<FirstBreak> results(scenes.size());
   const int jobs = o.jobs > 0 ? o.jobs : std::max(1u, std::thread::hardware_concurrency());
   std::atomic<std::size_t> next{0};
@@ -70,47 +113,40 @@ int sweep_command(const SweepOptions& o) {
     }
   };
   {
-    Progress progress("sweep " + vary.key, static_cast<double>(scenes.size()), o.quiet);
+    Progress progress("sweep", static_cast<double>(scenes.size()), o.quiet);
     std::vector<std::thread> pool;
     for (int t = 1; t < std::min<int>(jobs, static_cast<int>(scenes.size())); ++t)
       pool.emplace_back(worker);
     std::thread watcher;
     if (!o.quiet)
-      watcher = std::thread([&] {
-        while (done < scenes.size() && !g_interrupted && !failed) {
-          progress.update(static_cast<double>(done));
-          std::this_thread::sleep_for(std::chrono::milliseconds(100));
-        }
-      });
-    worker();
-    for (auto& t : pool) t.join();
-    if (watcher.joinable()) watcher.join();
+      on_progress = [&](std::size_t done) { progress.update(static_cast<double>(done)); };
+    results = sweep_first_breaks(scenes, o.solver, o.jobs, &g_interrupted, on_progress);
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "chainbreak: %s\n", e.what());
+    return 1;
   }
-  if (g_interrupted) {
-    std::fprintf(stderr, "chainbreak: interrupted; no CSV written\n");
-    return 130;
-  }
+  if (g_interrupted) return interrupted_status("no CSV written");
   if (!failure.empty()) {
     std::fprintf(stderr, "chainbreak: %s\n", failure.c_str());
     return 1;
   }
-  std::string text = "value,spring,tau\n";
-  for (std::size_t i = 0; i < results.size(); ++i) {
-    append_number(text, vary.value(first + static_cast<int>(i)));
-    text += ',';
-    if (results[i].broke) {
-      text += std::to_string(results[i].spring) + ",";
-      append_number(text, results[i].tau);
-    } else {
-      text += ',';
-    }
-    text += '\n';
-  }
+  std::string text = grid.csv_header() + "\n";
+  for (std::size_t i = 0; i < results.size(); ++i)
+    append_row(text, grid.point(range.first + i), results[i]);
   out.write(text);
   out.commit();
+  // The record last: its presence says the CSV is complete (resubmission and merge rely on it).
+  ShardRecord record = sweep_record(o, grid);
+  record.shard = shard;
+  record.points = range;
+  record.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  record.peak_memory_kib = peak_memory_kib();
+  record.host = host_name();
+  out_record.write(record_json(record));
+  out_record.commit();
   if (!o.quiet)
-    std::fprintf(stderr, "sweep: %zu values of %s written to %s\n", results.size(),
-                 vary.key.c_str(), o.csv.c_str());
+    std::fprintf(stderr, "sweep: %zu points written to %s\n", results.size(), o.csv.c_str());
   return 0;
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <numbers>
@@ -138,6 +139,19 @@ Forcing make_forcing(const DriveDesc& d) {
 }
 
 void load_drive_table(DriveDesc& drive, const std::string& path) {
+  // Checked before reading: /dev/zero or a pipe would be read until memory runs out.
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (!error && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    throw DriveError(path +
+                     ": not a regular file (a device, pipe or folder); a drive table "
+                     "is a CSV file of tau,f rows");
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
+  if (!error && size > kMaxDriveTableBytes)
+    throw DriveError(path + ": " + std::to_string(size) + " bytes is more than the limit of " +
+                     std::to_string(kMaxDriveTableBytes) + " bytes (" +
+                     std::to_string(kMaxDriveTableBytes >> 20) +
+                     " MiB) for a drive table; thin the table out, or use an expr drive");
   std::ifstream in(path);
   if (!in)
     throw DriveError(

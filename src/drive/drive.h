@@ -2,6 +2,7 @@
 // gets it (make_forcing). A drive starts at t0: f(tau) = g(tau - t0) for tau >= t0, 0 before.
 #pragma once
 
+#include <cstdint>
 #include <istream>
 #include <stdexcept>
 #include <string>
@@ -37,8 +38,13 @@ double drive_value(const DriveDesc& drive, double tau);
 // Compiles the drive for the integrator. Throws DriveError for a bad expression.
 Forcing make_forcing(const DriveDesc& drive);
 
+// The largest table file load_drive_table reads: some 3 million rows, far more than a
+// drive needs; a bigger file (or /dev/zero, which never ends) is a mistake.
+inline constexpr std::uintmax_t kMaxDriveTableBytes = 64u << 20;
+
 // Loads a CSV of "tau,f" rows (an optional header line, '#' comments) into drive.table.
-// Throws DriveError naming the file, the line and what is wrong.
+// Throws DriveError naming the file, the line and what is wrong; refuses what is not a
+// regular file (a device, a pipe, a folder) and files over kMaxDriveTableBytes.
 void load_drive_table(DriveDesc& drive, const std::string& path);
 // The same from a stream already open (`path` names it in messages): the fuzzer's entry.
 std::vector<std::pair<double, double>> parse_drive_table(std::istream& in, const std::string& path);

@@ -52,7 +52,8 @@ FirstBreak exact_first_break(const ChainParams& chain, const DriveDesc& drive, d
 // Eq. (rescale2): a ramp beta tau with threshold phi_c is the unit ramp with zeta_c = phi_c / beta.
 // Thresholds are visited in increasing order so that one sweep serves them all.
 std::vector<FirstBreak> breaking_map(int beads, double gamma, BreakMode mode,
-                                     const std::vector<double>& zeta_c, double t_end) {
+                                     const std::vector<double>& zeta_c, double t_end,
+                                     const std::atomic<bool>* stop) {
   DriveDesc ramp;
   ramp.type = DriveType::Ramp;
   ramp.beta = 1.0;
@@ -63,7 +64,10 @@ std::vector<FirstBreak> breaking_map(int beads, double gamma, BreakMode mode,
   std::sort(order.begin(), order.end(),
             [&](std::size_t a, std::size_t b) { return zeta_c[a] < zeta_c[b]; });
   std::vector<FirstBreak> out(zeta_c.size());
-  for (std::size_t i : order) out[i] = scan.first(zeta_c[i], t_end);
+  for (std::size_t i : order) {
+    if (stop && stop->load(std::memory_order_relaxed)) break;
+    out[i] = scan.first(zeta_c[i], t_end);
+  }
   return out;
 }
 

@@ -4,6 +4,7 @@
 // the interpolation error, and refines every interval that might reach the threshold.
 #pragma once
 
+#include <atomic>
 #include <vector>
 
 #include "drive/drive.h"
@@ -21,9 +22,11 @@ struct FirstBreak {
 FirstBreak exact_first_break(const ChainParams& chain, const DriveDesc& drive, double t_end);
 
 // The breaking map of Fig. 4(c): first-breaking spring against zeta_c = phi_c / beta for a
-// ramp, one entry per zeta value.
+// ramp, one entry per zeta value. Once *stop is true the remaining entries stay "no break"
+// (an interrupted `figures` throws the map away).
 std::vector<FirstBreak> breaking_map(int beads, double gamma, BreakMode mode,
-                                     const std::vector<double>& zeta_c, double t_end);
+                                     const std::vector<double>& zeta_c, double t_end,
+                                     const std::atomic<bool>* stop = nullptr);
 
 // One body, two strings (N = 1 with the pull string, ramp beta tau, phi_c = 1): the lower
 // string breaks first exactly when sin(1/beta) > 0, i.e. beta in (1/((2m+1) pi), 1/(2 m pi)).

@@ -10,15 +10,15 @@
 #include <thread>
 
 #include "physics/integrator.h"
+#include "physics/run_loop.h"
 
 namespace cb {
 
 FirstBreak simulated_first_break(const ChainParams& chain, const DriveDesc& drive, double t_end,
                                  double dt, const std::atomic<bool>* stop) {
   Integrator sim(chain, make_forcing(drive), {dt, 1});
-  const std::int64_t last = std::llround(t_end / dt);
-  while (sim.state().step < last && sim.state().breaks.empty() && !(stop && *stop))
-    if (!sim.step()) throw std::runtime_error(sim.error());
+  const StopRule rule{std::llround(t_end / dt), std::nullopt, true, stop};
+  if (run_until(sim, rule) == RunEnd::Failed) throw std::runtime_error(sim.error());
   FirstBreak fb;
   if (!sim.state().breaks.empty()) {
     fb.broke = true;

@@ -39,7 +39,7 @@ std::vector<double> logspace(double lo, double hi, int count) {
   return out;
 }
 
-Series make_series(std::string label, SeriesStyle style, FigureRgb colour, std::vector<double> x,
+Series make_series(std::string label, SeriesStyle style, FigureColour colour, std::vector<double> x,
                    std::vector<double> y) {
   Series s;
   s.label = std::move(label);

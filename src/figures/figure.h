@@ -1,7 +1,7 @@
-// A figure as plain data: panels of series over axes, with no GL. Built by figure_specs.h
-// (the paper's Figs. 3-5 and two maps of which part breaks), drawn by the overlay's plotting
-// code (overlay/figure_drawing.h), written as CSV by the app: one struct, three consumers, so
-// the PNG and its CSV cannot disagree.
+// A figure as plain data: panels of series over axes, with no GL and no cairo. Built by
+// figure_specs.h (the paper's Figs. 3-5 and two maps of which part breaks), drawn into PNG,
+// SVG and PDF by one function of the cairo backend (figure_cairo/figure_draw.h), written as
+// CSV by the app: one struct, every output, so the pictures and the CSV cannot disagree.
 #pragma once
 
 #include <cstdint>
@@ -9,21 +9,44 @@
 #include <utility>
 #include <vector>
 
+#include "theme/theme.h"
+
 namespace cb {
 
-struct FigureRgb {
-  std::uint8_t r = 0, g = 0, b = 0;
+// A series' or note's colour as a role of the theme (theme/theme.h), not as a colour: the same
+// figure is drawn black on white (light) and light on dark, so "ink" is black on paper and
+// near-white on a projector. figure_rgb() resolves a role under a theme.
+enum class FigureColour {
+  Ink,      // the theme's text colour: the exact solution, totals, notes
+  Muted,    // the theme's secondary text colour: continuum bands, guides
+  Accent,   // thresholds, switches (Okabe-Ito vermillion)
+  Series0,  // the theme's three data series (Okabe-Ito: told apart by colour-blind readers)
+  Series1,
+  Series2,
+  Kinetic,    // the energy plot's kinetic (reddish purple), also windows of a second kind
+  Potential,  // the energy plot's potential (yellow; a darker gold on white)
 };
-
-// Okabe-Ito colours (distinct for colour-blind readers), as the overlay's series use them.
-inline constexpr FigureRgb kFigSkyBlue{86, 180, 233};
-inline constexpr FigureRgb kFigGreen{0, 158, 115};
-inline constexpr FigureRgb kFigOrange{230, 159, 0};
-inline constexpr FigureRgb kFigVermillion{213, 94, 0};
-inline constexpr FigureRgb kFigPurple{204, 121, 167};
-inline constexpr FigureRgb kFigYellow{240, 228, 66};
-inline constexpr FigureRgb kFigGrey{150, 153, 160};
-inline constexpr FigureRgb kFigWhite{236, 236, 240};
+inline Rgb8 figure_rgb(FigureColour colour, const Theme& t) {
+  switch (colour) {
+    case FigureColour::Ink:
+      return t.text;
+    case FigureColour::Muted:
+      return t.text_dim;
+    case FigureColour::Accent:
+      return t.accent;
+    case FigureColour::Series0:
+      return t.series[0];
+    case FigureColour::Series1:
+      return t.series[1];
+    case FigureColour::Series2:
+      return t.series[2];
+    case FigureColour::Kinetic:
+      return t.kinetic;
+    case FigureColour::Potential:
+      return t.potential;
+  }
+  return t.text;
+}
 
 enum class SeriesStyle {
   Line,    // a polyline through (x[i], y[i]); NaN in y breaks it
@@ -38,7 +61,7 @@ const char* series_style_name(SeriesStyle style);
 struct Series {
   std::string label;  // the legend entry and the CSV's series name; empty: no legend entry
   SeriesStyle style = SeriesStyle::Line;
-  FigureRgb colour = kFigWhite;
+  FigureColour colour = FigureColour::Ink;
   std::vector<double> x, y;
   std::vector<double> x2, y2;  // XSpans: right edges; Band: upper edges
 };
@@ -75,7 +98,7 @@ inline Axis axis(std::string label, double lo, double hi, bool log = false) {
 struct Note {
   double x = 0, y = 0;
   std::string text;
-  FigureRgb colour = kFigWhite;
+  FigureColour colour = FigureColour::Ink;
 };
 
 struct Panel {
@@ -92,8 +115,8 @@ struct Panel {
 };
 
 struct Figure {
-  std::string name;     // file stem: fig4a -> fig4a.png, fig4a.csv
-  std::string caption;  // one line: what it shows and with which parameters
+  std::string name;     // file stem: fig4a -> fig4a.png, .svg, .pdf, .csv
+  std::string caption;  // what it shows and with which parameters (drawn under the panels)
   std::vector<Panel> panels;
 };
 

@@ -4,6 +4,7 @@
 // pull-or-jerk experiment breaks against beta). Plain data, no GL.
 #pragma once
 
+#include <atomic>
 #include <functional>
 #include <string>
 #include <vector>
@@ -17,7 +18,15 @@ struct FigureOptions {
   double dt = 0.01;      // RK4 step (the paper's Appendix: 150 / 15000)
   int map_exact = 1200;  // zeta_c (or beta) samples of the exact maps
   int map_rk4 = 90;      // samples of the RK4 maps (each a run until the first break)
+  // When set and true, the RK4 runs stop early: the figure is then incomplete and the
+  // caller (an interrupted `figures`) throws it away.
+  const std::atomic<bool>* stop = nullptr;
 };
+
+// True once options.stop is set and true: a builder may then return what it has.
+inline bool stopped(const FigureOptions& o) {
+  return o.stop && o.stop->load(std::memory_order_relaxed);
+}
 
 struct FigureEntry {
   std::string name;  // fig3a ... fig5, breaking_map, one_body_map
@@ -50,7 +59,7 @@ inline constexpr double kOneBodyBetaLo = 0.01, kOneBodyBetaHi = 10.0;
 // Shared by the builders (figure.cpp).
 std::vector<double> linspace(double lo, double hi, int count);
 std::vector<double> logspace(double lo, double hi, int count);
-Series make_series(std::string label, SeriesStyle style, FigureRgb colour, std::vector<double> x,
+Series make_series(std::string label, SeriesStyle style, FigureColour colour, std::vector<double> x,
                    std::vector<double> y);
 // value with `decimals` decimals (labels and notes).
 std::string fixed(double value, int decimals);

@@ -49,18 +49,20 @@ double propagator(double xi, double tau) {
 
 Figure figure_3a(const FigureOptions&) {
   Figure f{
-      "fig3a", "Fig. 3(a): psi(xi, tau) of Eq. (conv) for f = u(tau), N = 30, gamma = 0.01", {}};
+      "fig3a",
+      "Fig. 3(a): \u03C8(\u03BE, \u03C4) of Eq. (conv) for f = u(\u03C4), N = 30, \u03B3 = 0.01",
+      {}};
   f.panels.push_back(field_panel(
       "Fig. 3(a)  \u03C8(\u03BE, \u03C4) of Eq. (conv), f = u(\u03C4), N = 30, \u03B3 = 0.01",
       field(480.0, 240, 2.0 * kN, "\u03C8",
             [](double xi, double tau) { return continuum_psi_step(kN, 0.01, xi, tau); })));
   f.panels[0].notes.push_back(
-      {1.0, 440.0, "\u03C8 \u2192 \u03BE, the particular solution", kFigWhite});
+      {1.0, 440.0, "\u03C8 \u2192 \u03BE, the particular solution", FigureColour::Ink});
   return f;
 }
 
 Figure figure_3b(const FigureOptions&) {
-  Figure f{"fig3b", "Fig. 3(b): the propagator dG/dxi of Eq. (conv2), gamma = 0, N = 30", {}};
+  Figure f{"fig3b", "Fig. 3(b): the propagator dG/d\u03BE of Eq. (conv2), \u03B3 = 0, N = 30", {}};
   f.panels.push_back(field_panel("Fig. 3(b)  the propagator dG/d\u03BE, \u03B3 = 0, N = 30",
                                  field(8.0 * kN, 480, 1.0, "dG/d\u03BE", propagator)));
   return f;
@@ -68,7 +70,8 @@ Figure figure_3b(const FigureOptions&) {
 
 Figure figure_3c(const FigureOptions& o) {
   Figure f{"fig3c",
-           "Fig. 3(c): phi_j under f = sin(2 pi tau / 4N), N = 30, gamma = 0: RK4 (points) vs "
+           "Fig. 3(c): \u03C6\u2C7C under f = sin(2\u03C0\u03C4 / 4N), N = 30, \u03B3 = 0: RK4 "
+           "(points) vs "
            "Eq. (sum) (lines)",
            {}};
   DriveDesc sine;
@@ -83,7 +86,8 @@ Figure figure_3c(const FigureOptions& o) {
       "\u03B3 = 0";
   p.x = axis("\u03C4", 0.0, 480.0);
   p.y = axis("\u03C6\u2C7C", -1.0, 1.0);
-  const FigureRgb colours[3] = {kFigSkyBlue, kFigGreen, kFigOrange};
+  const FigureColour colours[3] = {FigureColour::Series0, FigureColour::Series1,
+                                   FigureColour::Series2};
   const auto f_of = [](double t) { return std::sin(2.0 * std::numbers::pi * t / (4.0 * kN)); };
   const std::vector<double> fine = linspace(0.0, 480.0, 1921);
   for (std::size_t i = 0; i < springs.size(); ++i) {
@@ -101,7 +105,10 @@ Figure figure_3c(const FigureOptions& o) {
 }
 
 Figure figure_3d(const FigureOptions&) {
-  Figure f{"fig3d", "Fig. 3(d): phi(xi, tau) for f = delta(tau) + delta(tau - N), gamma = 0", {}};
+  Figure f{"fig3d",
+           "Fig. 3(d): \u03C6(\u03BE, \u03C4) for f = \u03B4(\u03C4) + \u03B4(\u03C4 \u2212 N), "
+           "\u03B3 = 0",
+           {}};
   f.panels.push_back(
       field_panel("Fig. 3(d)  \u03C6(\u03BE, \u03C4) for f = \u03B4(\u03C4) + \u03B4(\u03C4 \u2212 "
                   "N), \u03B3 = 0",

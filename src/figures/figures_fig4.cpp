@@ -15,7 +15,8 @@ namespace {
 
 constexpr int kN = 30;
 const std::vector<int> kSprings = {1, kN / 2, kN};
-constexpr FigureRgb kColours[3] = {kFigSkyBlue, kFigGreen, kFigOrange};
+constexpr FigureColour kColours[3] = {FigureColour::Series0, FigureColour::Series1,
+                                      FigureColour::Series2};
 
 Panel time_panel(std::string title, double tau_end, std::string y_label) {
   Panel p;
@@ -41,7 +42,8 @@ void add_phi(Panel& p, const std::vector<int>& springs, const Trajectory& lines,
 
 Figure figure_4a(const FigureOptions& o) {
   Figure f{"fig4a",
-           "Fig. 4(a): phi_1, phi_15, phi_30 for f = tau, N = 30, gamma = 0: RK4 (points) vs "
+           "Fig. 4(a): \u03C6\u2081, \u03C6\u2081\u2085, \u03C6\u2083\u2080 for f = \u03C4, N = "
+           "30, \u03B3 = 0: RK4 (points) vs "
            "Eqs. (phi1), (phij), (phiN) (lines)",
            {}};
   Panel p = time_panel(
@@ -64,8 +66,9 @@ Figure figure_4a(const FigureOptions& o) {
 }
 
 Figure figure_4b(const FigureOptions& o) {
-  Figure f{
-      "fig4b", "Fig. 4(b): energy per particle, Eq. (energy), RK4, f = tau, N = 30, gamma = 0", {}};
+  Figure f{"fig4b",
+           "Fig. 4(b): energy per particle, Eq. (energy), RK4, f = \u03C4, N = 30, \u03B3 = 0",
+           {}};
   Panel p = time_panel(
       "Fig. 4(b)  energy per particle, Eq. (energy), RK4, \u03B2 = 1, N = 30, "
       "\u03B3 = 0",
@@ -74,10 +77,11 @@ Figure figure_4b(const FigureOptions& o) {
   std::vector<double> total;
   for (std::size_t i = 0; i < rk4.tau.size(); ++i)
     total.push_back(rk4.kinetic[i] + rk4.potential[i]);
-  p.series.push_back(make_series("total", SeriesStyle::Line, kFigWhite, rk4.tau, total));
-  p.series.push_back(make_series("kinetic", SeriesStyle::Line, kFigPurple, rk4.tau, rk4.kinetic));
+  p.series.push_back(make_series("total", SeriesStyle::Line, FigureColour::Ink, rk4.tau, total));
   p.series.push_back(
-      make_series("potential", SeriesStyle::Line, kFigYellow, rk4.tau, rk4.potential));
+      make_series("kinetic", SeriesStyle::Line, FigureColour::Kinetic, rk4.tau, rk4.kinetic));
+  p.series.push_back(
+      make_series("potential", SeriesStyle::Line, FigureColour::Potential, rk4.tau, rk4.potential));
   fit_y(p);
   f.panels.push_back(std::move(p));
   return f;
@@ -85,8 +89,9 @@ Figure figure_4b(const FigureOptions& o) {
 
 Figure figure_4c(const FigureOptions&) {
   Figure f{"fig4c",
-           "Fig. 4(c): zeta_j = phi_j / beta (Eq. (rescale2)), exact, N = 30, gamma = 0, and "
-           "three thresholds zeta_c with the spring that breaks first",
+           "Fig. 4(c): \u03B6\u2C7C = \u03C6\u2C7C / \u03B2 (Eq. (rescale2)), exact, N = 30, "
+           "\u03B3 = 0, and "
+           "three thresholds \u03B6_c with the spring that breaks first",
            {}};
   Panel p = time_panel(
       "Fig. 4(c)  which part breaks: \u03B6\u2C7C = \u03C6\u2C7C/\u03B2 "
@@ -95,7 +100,7 @@ Figure figure_4c(const FigureOptions&) {
   const Trajectory exact =
       exact_trajectory(kN, 0.0, unit_ramp(), kSprings, linspace(0.0, 220.0, 881));
   add_phi(p, kSprings, exact, "exact", nullptr, "\u03B6");
-  Series thresholds = make_series("thresholds", SeriesStyle::HLines, kFigVermillion, {}, {});
+  Series thresholds = make_series("thresholds", SeriesStyle::HLines, FigureColour::Accent, {}, {});
   for (double zeta : kFig4cThresholds) {
     const FirstBreak b = ramp_first_break(kN, 0.0, zeta);
     thresholds.x.push_back(b.tau);  // where the threshold is first reached
@@ -106,7 +111,7 @@ Figure figure_4c(const FigureOptions&) {
     p.notes.push_back({4.0, zeta + 7.0,
                        "\u03B6_c = " + fixed(zeta, 0) + ": spring " + std::to_string(b.spring) +
                            " breaks first at \u03C4 = " + fixed(b.tau, 1) + " (" + why + ")",
-                       kFigVermillion});
+                       FigureColour::Accent});
   }
   p.series.push_back(std::move(thresholds));
   p.y.lo = -5.0;
@@ -117,7 +122,7 @@ Figure figure_4c(const FigureOptions&) {
 
 Figure figure_4d(const FigureOptions& o) {
   Figure f{"fig4d",
-           "Fig. 4(d): friction gamma = 0.01, f = tau, N = 30: RK4 (points) vs the exact "
+           "Fig. 4(d): friction \u03B3 = 0.01, f = \u03C4, N = 30: RK4 (points) vs the exact "
            "solution (lines)",
            {}};
   Panel p = time_panel(
@@ -135,10 +140,11 @@ Figure figure_4d(const FigureOptions& o) {
 }
 
 Figure figure_5(const FigureOptions& o) {
-  Figure f{"fig5",
-           "Fig. 5: the exact solution Eq. (exactconv) (lines) vs RK4 (points), N = 30, gamma = 0, "
-           "f = tau; inset: the small oscillation of phi_1 on its plateau",
-           {}};
+  Figure f{
+      "fig5",
+      "Fig. 5: the exact solution Eq. (exactconv) (lines) vs RK4 (points), N = 30, \u03B3 = 0, "
+      "f = \u03C4; inset: the small oscillation of \u03C6\u2081 on its plateau",
+      {}};
   const std::vector<int> springs = {1, kN};
   Panel p = time_panel(
       "Fig. 5  Eq. (exactconv) (lines) vs RK4 (points), N = 30, \u03B3 = 0, "

@@ -43,14 +43,14 @@ GlBackend choose_gl_backend(const std::string& cli_value) {
   GlBackend backend = GlBackend::Auto;
   if (!cli_value.empty()) {
     if (!parse_gl_backend(cli_value, backend)) {
-      throw GlError("--gl \"" + cli_value + "\"" + kExpected);
+      throw GlOptionError("--gl \"" + cli_value + "\"" + kExpected);
     }
     return backend;
   }
   // An empty CHAINBREAK_GL means "not set", as it does for most tools' variables.
   const char* env = std::getenv("CHAINBREAK_GL");
   if (env != nullptr && *env != '\0' && !parse_gl_backend(env, backend)) {
-    throw GlError("CHAINBREAK_GL=\"" + std::string(env) + "\"" + kExpected);
+    throw GlOptionError("CHAINBREAK_GL=\"" + std::string(env) + "\"" + kExpected);
   }
   return backend;
 }

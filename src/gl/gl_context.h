@@ -18,6 +18,11 @@ const char* gl_backend_name(GlBackend backend);
 struct GlError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+// A misspelled backend in --gl or CHAINBREAK_GL: a mistake in the options (status 2), not a
+// machine without GL (status 1).
+struct GlOptionError : GlError {
+  using GlError::GlError;
+};
 
 // A current OpenGL 3.3 core context with GL functions loaded (gl/gl_loader.h), sized for
 // off-screen rendering into framebuffer objects. Destroying it releases the context.
@@ -41,7 +46,7 @@ class GlContext {
 std::unique_ptr<GlContext> create_gl_context(GlBackend backend);
 
 // The backend asked for by --gl (if not empty) or else CHAINBREAK_GL, else Auto. Throws
-// GlError for a misspelled value.
+// GlOptionError for a misspelled value.
 GlBackend choose_gl_backend(const std::string& cli_value);
 
 // One line for logs: "osmesa: llvmpipe (LLVM 15.0.6, 256 bits), 4.5 (Core Profile) Mesa 22.3.6",

@@ -70,6 +70,7 @@ struct Target {
 
 struct Overlay::Impl {
   int width = 0, height = 0;
+  ThemeName theme = ThemeName::Dark;
   float delta_time = 0.0f;
   OverlayLayout layout;
   ImGuiContext* context = nullptr;
@@ -109,7 +110,7 @@ struct Overlay::Impl {
     ImGui::GetIO().DeltaTime = delta_time;
     ImGui::NewFrame();
     marker.texture = ImGui::GetIO().Fonts->TexID;  // set when the backend uploaded the atlas
-    Canvas canvas{pass, ImGui::GetBackgroundDrawList(), fonts, marker, layout, d};
+    Canvas canvas{pass, ImGui::GetBackgroundDrawList(), fonts, marker, layout, d, cb::theme(theme)};
     if (!layout.hud.empty()) draw_hud(canvas);
     if (!layout.phi.empty()) draw_phi_plot(canvas);
     if (!layout.energy.empty()) draw_energy_plot(canvas);
@@ -146,7 +147,7 @@ struct Overlay::Impl {
   void copy_spacetime(const OverlayData& d, GLuint frame) {
     const Box area = spacetime_mapping(layout, d).area;
     const int w = static_cast<int>(area.w), h = static_cast<int>(area.h);
-    compose_spacetime(layout, d, pixels);
+    compose_spacetime(layout, d, theme, pixels);
     spacetime.resize(w, h);
     glBindTexture(GL_TEXTURE_2D, spacetime.texture);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
@@ -156,9 +157,11 @@ struct Overlay::Impl {
   }
 };
 
-Overlay::Overlay(int width, int height, double fps, const OverlaySwitches& switches)
+Overlay::Overlay(int width, int height, double fps, const OverlaySwitches& switches,
+                 ThemeName theme)
     : impl_(std::make_unique<Impl>()) {
   Impl& im = *impl_;
+  im.theme = theme;
   im.width = width;
   im.height = height;
   im.delta_time = static_cast<float>(1.0 / (fps > 0 ? fps : 30.0));

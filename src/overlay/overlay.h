@@ -15,6 +15,7 @@
 
 #include "overlay/overlay_layout.h"
 #include "snapshot/snapshot.h"
+#include "theme/theme.h"
 
 namespace cb {
 
@@ -22,26 +23,23 @@ namespace cb {
 // from this folder, or from $CHAINBREAK_FONT_DIR when set.
 inline constexpr const char* kOverlayFontDir = "/usr/share/fonts/truetype/dejavu";
 
-// The overlay's colours, 8-bit sRGB, on the snapshot's dark theme. The series follow the
-// Okabe-Ito palette (distinct for colour-blind viewers): sky blue, bluish green, orange.
-struct OverlayRgb {
-  std::uint8_t r = 0, g = 0, b = 0;
-};
-inline constexpr OverlayRgb kOverlayBackground{23, 24, 28};  // the snapshot's background
-inline constexpr OverlayRgb kOverlaySeries[kPlottedSprings] = {
-    {86, 180, 233}, {0, 158, 115}, {230, 159, 0}};  // phi_1, phi_N/2, phi_N
+// The overlay's colours are the theme's roles (theme/theme.h), 8-bit sRGB: its series
+// (phi_1, phi_N/2, phi_N) follow the Okabe-Ito palette, distinct for colour-blind viewers.
+using OverlayRgb = Rgb8;
+static_assert(kPlottedSprings == 3, "the theme has three series colours");
 // The exact lines are their series' colour at this opacity: the RK4 points stand out on them.
 inline constexpr float kOverlayExactLineAlpha = 0.6f;
 
 // The space-time picture's colour for s = phi / phi_c: the chain's strain colour map, rounded
 // to 8 bits; the background for NaN (a broken spring: a gap).
-OverlayRgb overlay_strain_rgb(float s);
+OverlayRgb overlay_strain_rgb(float s, ThemeName theme);
 
 class Overlay {
  public:
   // Needs a current GlContext (gl/gl_context.h). Throws std::runtime_error naming the file
   // and the package when a font is missing, or when ImGui's GL backend does not start.
-  Overlay(int width, int height, double fps, const OverlaySwitches& switches);
+  Overlay(int width, int height, double fps, const OverlaySwitches& switches,
+          ThemeName theme = ThemeName::Dark);
   ~Overlay();
   Overlay(const Overlay&) = delete;
   Overlay& operator=(const Overlay&) = delete;

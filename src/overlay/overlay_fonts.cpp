@@ -1,4 +1,4 @@
-// The overlay's fonts and the RK4 points' marker, shared by the Overlay and the FigureDrawer:
+// The overlay's fonts and the RK4 points' marker, shared by the Overlay:
 // one way to set up Dear ImGui headless. Internal to cb_overlay.
 #include <imgui.h>
 
@@ -11,6 +11,7 @@
 
 #include "overlay/overlay.h"
 #include "overlay/overlay_panels.h"
+#include "theme/fonts.h"
 
 namespace cb::overlay_detail {
 
@@ -25,15 +26,9 @@ constexpr ImWchar kGlyphRanges[] = {0x0020, 0x007E, 0x00B2, 0x00B3, 0x00B7, 0x00
                                     0x2070, 0x209C, 0x2192, 0x2192, 0x2212, 0x2212, 0x221A,
                                     0x221A, 0x2C7C, 0x2C7C, 0};
 
-ImFont* load_font(ImFontAtlas& atlas, const char* file, float size) {
-  const char* dir = std::getenv("CHAINBREAK_FONT_DIR");
-  const std::string path =
-      (std::filesystem::path(dir && *dir ? dir : kOverlayFontDir) / file).string();
-  // Checked here: ImGui would only assert (or return null) on a missing file.
-  if (!std::filesystem::is_regular_file(path))
-    throw std::runtime_error("the overlay's font " + path +
-                             " is missing: install the package fonts-dejavu-core " +
-                             "(apt-get install fonts-dejavu-core), or render with --no-overlay");
+ImFont* load_font(ImFontAtlas& atlas, FontFace face, float size) {
+  // font_path checks the file: ImGui would only assert (or return null) on a missing one.
+  const std::string path = font_path(face);
   ImFontConfig config;
   // Glyphs on whole pixels, rasterised once at their size: crisp, and a third of the atlas.
   config.OversampleH = 1;
@@ -54,9 +49,9 @@ void configure_headless_io(ImGuiIO& io, float width, float height, float delta_t
 
 Fonts load_fonts(ImFontAtlas& atlas, float size, Marker& marker) {
   Fonts fonts;
-  fonts.sans = load_font(atlas, "DejaVuSans.ttf", size);
-  fonts.bold = load_font(atlas, "DejaVuSans-Bold.ttf", size);
-  fonts.mono = load_font(atlas, "DejaVuSansMono.ttf", size);
+  fonts.sans = load_font(atlas, FontFace::Sans, size);
+  fonts.bold = load_font(atlas, FontFace::Bold, size);
+  fonts.mono = load_font(atlas, FontFace::Mono, size);
   // The RK4 points' disc, baked into the atlas before the backend uploads it (the atlas is
   // converted to RGBA from this alpha channel on first use).
   const float radius = std::max(2.0f, 0.2f * size);

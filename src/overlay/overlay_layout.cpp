@@ -1,4 +1,5 @@
 #include "overlay/overlay_layout.h"
+#include "theme/fonts.h"
 
 #include <algorithm>
 #include <cmath>
@@ -82,8 +83,9 @@ OverlayLayout overlay_layout(int width, int height, const OverlaySwitches& switc
   if (!switches.any() || width < kOverlayMinWidth || height < kOverlayMinHeight) return l;
   const float W = static_cast<float>(width), H = static_cast<float>(height);
   l.enabled = true;
-  // 1.8% of the height: 19 px at 1080p, 39 px at 4K (crisp: the atlas is rasterised at it).
-  l.font_px = std::max(11.0f, std::round(0.018f * H));
+  // The frame's one text size (theme/fonts.h), as the chain panel's labels: 22 px at 1080p,
+  // 14 px at 480p (crisp: the atlas is rasterised at it).
+  l.font_px = frame_text_px(height);
   // Whole pixels: ImGui then draws antialiased lines from its texture, 2 vertices a point.
   l.line_px = std::max(2.0f, std::round(0.12f * l.font_px));
   // The same outer margin as the snapshot's, so the panels line up with the wall.

@@ -25,7 +25,7 @@ void draw_hud(Canvas& c) {
   const float fs = c.layout.font_px, line = 1.38f * fs;
   if (still)
     c.draw->AddRect(ImVec2(box.x + 0.5f, box.y + 0.5f),
-                    ImVec2(box.right() - 0.5f, box.bottom() - 0.5f), col(kBorder), 0.3f * fs, 0,
+                    ImVec2(box.right() - 0.5f, box.bottom() - 0.5f), col(c.theme.border), 0.3f * fs, 0,
                     1.0f);
   c.draw->PushClipRect(ImVec2(box.x, box.y), ImVec2(box.right(), box.bottom()), true);
   const float x = box.x + 0.6f * fs, value_x = x + 2.2f * fs;
@@ -34,21 +34,21 @@ void draw_hud(Canvas& c) {
     const std::string title = d.title.empty() ? std::string("chainbreak") : d.title;
     const float size = 1.15f * fs, wrap = box.right() - x - 0.4f * fs;
     if (still)
-      c.draw->AddText(c.fonts.bold, size, ImVec2(std::round(x), std::round(y)), col(kText),
+      c.draw->AddText(c.fonts.bold, size, ImVec2(std::round(x), std::round(y)), col(c.theme.text),
                       title.c_str(), nullptr, wrap);
     y += c.fonts.bold->CalcTextSizeA(size, FLT_MAX, wrap, title.c_str()).y + 0.35f * line;
   }
   std::string params = format("N = %d   \u03B3 = %g", d.beads, d.gamma);
   params += d.phi_c > 0 ? format("   \u03C6_c = %g", d.phi_c) : std::string("   unbreakable");
-  if (still) text_sub(c, c.fonts.sans, x, y, kDim, params, 0.0f, 0.9f);
+  if (still) text_sub(c, c.fonts.sans, x, y, c.theme.text_dim, params, 0.0f, 0.9f);
   y += line;
   // Label in the proportional font (still), value in the monospaced one so digits do not
   // jitter (changing).
   const auto row = [&](const std::string& label, const std::string& value) {
     if (still)
-      text(c, c.fonts.sans, x, y, kText, label);
+      text(c, c.fonts.sans, x, y, c.theme.text, label);
     else
-      text(c, c.fonts.mono, value_x, y, kText, value);
+      text(c, c.fonts.mono, value_x, y, c.theme.text, value);
     y += line;
   };
   row("\u03C4", format("%.2f", d.tau));
@@ -57,16 +57,16 @@ void draw_hud(Canvas& c) {
   row("\u03B5", format("%.4g", d.energy));  // Eq. (energy), per particle
   const auto part = [&](const char* label, double value) {
     if (still)
-      text(c, c.fonts.sans, value_x, y, kDim, label, 0.0f, 0.85f);
+      text(c, c.fonts.sans, value_x, y, c.theme.text_dim, label, 0.0f, 0.85f);
     else
-      text(c, c.fonts.mono, value_x + 5.2f * fs, y, kDim, format("%.4g", value), 0.0f, 0.85f);
+      text(c, c.fonts.mono, value_x + 5.2f * fs, y, c.theme.text_dim, format("%.4g", value), 0.0f, 0.85f);
     y += 0.9f * line;
   };
   part("kinetic", d.kinetic);
   part("potential", d.potential);
   y += 0.1f * line;
   if (!still) {
-    text(c, c.fonts.sans, x, y, kText, d.breaks.empty() ? "no break yet" : "breaks");
+    text(c, c.fonts.sans, x, y, c.theme.text, d.breaks.empty() ? "no break yet" : "breaks");
     y += line;
     // As many breaks as fit; the last line counts the rest.
     const int fit = std::max(1, static_cast<int>((box.bottom() - y - 0.3f * fs) / line));
@@ -77,7 +77,7 @@ void draw_hud(Canvas& c) {
           b.spring == 0 ? std::string("pull string") : "spring " + std::to_string(b.spring);
       s += format(" at \u03C4 = %.2f", b.tau);
       if (i == fit - 1 && count > fit) s = format("+%d more", count - i);
-      text(c, c.fonts.mono, x + 0.6f * fs, y, kBreak, s, 0.0f, 0.9f);
+      text(c, c.fonts.mono, x + 0.6f * fs, y, c.theme.marker, s, 0.0f, 0.9f);
       y += line;
     }
   }
@@ -102,27 +102,27 @@ void draw_phi_plot(Canvas& c) {
         if (level < 0 && !d.threshold_both_signs) continue;
         if (level < d.phi_lo || level > d.phi_hi) continue;
         const float y = m.py(level);
-        dashed_hline(c, a.x, a.right(), y, col(kThreshold), w, 0.5f * fs);
+        dashed_hline(c, a.x, a.right(), y, col(c.theme.accent), w, 0.5f * fs);
         text_sub(c, c.fonts.sans, a.right() - 0.3f * fs, level > 0 ? y - 1.15f * fs : y + 0.1f * fs,
-                 kThreshold, level > 0 ? "\u03C6_c" : "\u2212\u03C6_c", 1.0f, 0.85f);
+                 c.theme.accent, level > 0 ? "\u03C6_c" : "\u2212\u03C6_c", 1.0f, 0.85f);
       }
     }
     // The exact solution is the unbroken chain's: where its lines end, and why. (Still: it
     // changes once, and the still parts are then drawn again.)
     if (std::isfinite(d.exact_end)) {
       const float x = m.px(d.exact_end);
-      dashed_vline(c, x, a.y, a.bottom(), col(kThreshold, 0.8f), 1.0f, 0.3f * fs);
+      dashed_vline(c, x, a.y, a.bottom(), col(c.theme.accent, 0.8f), 1.0f, 0.3f * fs);
       const std::string note = format("exact lines end: first break, \u03C4 = %.2f", d.exact_end);
       const bool left = x + text_width(c.fonts.sans, 0.8f * fs, note) + 0.5f * fs > a.right();
-      text(c, c.fonts.sans, left ? x - 0.3f * fs : x + 0.3f * fs, a.bottom() - 1.3f * fs, kDim,
+      text(c, c.fonts.sans, left ? x - 0.3f * fs : x + 0.3f * fs, a.bottom() - 1.3f * fs, c.theme.text_dim,
            note, left ? 1.0f : 0.0f, 0.8f);
     }
     c.draw->PopClipRect();
     std::vector<LegendEntry> entries;
     for (int s = 0; s < d.spring_count; ++s)
-      entries.push_back({kOverlaySeries[s], "\u03C6" + subscript(d.springs[s]), true});
+      entries.push_back({c.theme.series[s], "\u03C6" + subscript(d.springs[s]), true});
     legend(c, a, a.y + 0.3f * fs, entries);
-    text(c, c.fonts.sans, a.x + 0.6f * fs, a.y + 1.65f * fs, kDim,
+    text(c, c.fonts.sans, a.x + 0.6f * fs, a.y + 1.65f * fs, c.theme.text_dim,
          d.exact ? "dots: RK4 \u00B7 lines: exact" : "dots: RK4 (no exact lines above N = 1024)",
          0.0f, 0.8f);
     return;
@@ -132,7 +132,7 @@ void draw_phi_plot(Canvas& c) {
   // The exact lines under the RK4 points, each in its spring's colour, dimmed so that the
   // points stand out on them.
   for (int s = 0; d.exact && s < d.spring_count; ++s)
-    polyline(c, m, d.exact_tau, d.exact_phi[s], col(kOverlaySeries[s], kOverlayExactLineAlpha),
+    polyline(c, m, d.exact_tau, d.exact_phi[s], col(c.theme.series[s], kOverlayExactLineAlpha),
              c.layout.line_px);
   // The points, newest first so the newest always shows; at most one every ~2 diameters,
   // like the paper's figure (and each costs llvmpipe two triangles).
@@ -146,7 +146,7 @@ void draw_phi_plot(Canvas& c) {
       last_x = x;
       const float y = m.py(v[i]);
       c.draw->AddImage(c.marker.texture, ImVec2(x - h, y - h), ImVec2(x + h, y + h), c.marker.uv0,
-                       c.marker.uv1, col(kOverlaySeries[s]));
+                       c.marker.uv1, col(c.theme.series[s]));
     }
   }
   c.draw->PopClipRect();
@@ -164,22 +164,22 @@ void draw_energy_plot(Canvas& c) {
     axes(c, c.layout.energy, m, nice_ticks(0.0, d.tau_end, 4), nice_ticks(0.0, d.energy_hi, 5),
          "\u03C4", true);
     legend(c, a, a.y + 0.3f * fs,
-           {{kTotal, "total", false}, {kKinetic, "kin.", false}, {kPotential, "pot.", false}});
+           {{c.theme.total, "total", false}, {c.theme.kinetic, "kin.", false}, {c.theme.potential, "pot.", false}});
     return;
   }
   c.draw->PushClipRect(ImVec2(a.x, a.y), ImVec2(a.right(), a.bottom()), true);
   time_cursor(c, m);
   const float w = c.layout.line_px;
-  polyline(c, m, d.history_tau, d.energy_kinetic, col(kKinetic), w);
-  polyline(c, m, d.history_tau, d.energy_potential, col(kPotential), w);
-  polyline(c, m, d.history_tau, d.energy_total, col(kTotal), w);
+  polyline(c, m, d.history_tau, d.energy_kinetic, col(c.theme.kinetic), w);
+  polyline(c, m, d.history_tau, d.energy_potential, col(c.theme.potential), w);
+  polyline(c, m, d.history_tau, d.energy_total, col(c.theme.total), w);
   c.draw->PopClipRect();
 }
 
 // ---- The space-time picture: strain over springs and time ----------------------------------
 
-std::uint32_t spacetime_texel(float s) {
-  return col(overlay_strain_rgb(s));
+std::uint32_t spacetime_texel(float s, ThemeName theme) {
+  return col(overlay_strain_rgb(s, theme));
 }
 
 unsigned char marker_coverage(int x, int y, int size, float radius) {
@@ -206,19 +206,20 @@ void draw_spacetime(Canvas& c) {
   // The picture itself is composed on the CPU and copied in (compose_spacetime); its frame
   // goes on top of it.
   c.draw->AddRect(ImVec2(a.x - 0.5f, a.y - 0.5f), ImVec2(a.right() + 0.5f, a.bottom() + 0.5f),
-                  col(kFrame), 0.0f, 0, 1.0f);
+                  col(c.theme.axis), 0.0f, 0, 1.0f);
 }
 
-void compose_spacetime(const OverlayLayout& layout, const OverlayData& d,
+void compose_spacetime(const OverlayLayout& layout, const OverlayData& d, ThemeName theme,
                        std::vector<std::uint32_t>& pixels) {
   const PlotMapping m = spacetime_mapping(layout, d);
   const int w = static_cast<int>(m.area.w), h = static_cast<int>(m.area.h);
-  const std::uint32_t background = spacetime_texel(std::numeric_limits<float>::quiet_NaN());
+  const std::uint32_t background = spacetime_texel(std::numeric_limits<float>::quiet_NaN(), theme);
   pixels.assign(static_cast<std::size_t>(w) * h, background);
   const int rows = d.spacetime_rows(), columns = d.spacetime_columns;
   if (rows == 0 || columns == 0) return;
   // Each pixel shows the cell under its centre: column c spans springs c N / C .. (c+1) N / C,
-  // row r the times within half a row of spacetime_tau[r] (rows are evenly spaced from 0).
+  // row r the times nearer spacetime_tau[r] than its neighbours' (rows are evenly spaced in
+  // frames, which slow motion makes uneven in tau), up to half a normal row past the last.
   std::vector<int> column_of(static_cast<std::size_t>(w));
   for (int x = 0; x < w; ++x) {
     const double springs = m.x0 + (x + 0.5) / w * (m.x1 - m.x0);
@@ -230,11 +231,14 @@ void compose_spacetime(const OverlayLayout& layout, const OverlayData& d,
   int cached_row = -1;
   for (int y = 0; y < h; ++y) {  // y = 0 is the area's bottom row (GL order)
     const double tau = m.y0 + (y + 0.5) / h * (m.y1 - m.y0);
-    const long r = std::lround((tau - d.spacetime_tau.front()) / row_tau);
-    if (r < 0 || r >= rows) continue;
+    const auto& t = d.spacetime_tau;
+    if (tau < t.front() - 0.5 * row_tau || tau > t.back() + 0.5 * row_tau) continue;
+    const auto above = std::lower_bound(t.begin(), t.end(), tau);
+    long r = static_cast<long>(above - t.begin());
+    if (r == rows || (r > 0 && tau - t[r - 1] < t[r] - tau)) --r;
     if (r != cached_row) {
       for (int k = 0; k < columns; ++k)
-        colours[k] = spacetime_texel(d.spacetime[static_cast<std::size_t>(r) * columns + k]);
+        colours[k] = spacetime_texel(d.spacetime[static_cast<std::size_t>(r) * columns + k], theme);
       cached_row = static_cast<int>(r);
     }
     std::uint32_t* out = &pixels[static_cast<std::size_t>(y) * w];
@@ -260,7 +264,7 @@ void draw_modes(Canvas& c) {
     yt.values = {0.0, 0.5, 1.0};
     axes(c, c.layout.modes, m, xt, yt, "n", true);
     const Box& box = c.layout.modes;
-    text(c, c.fonts.sans, box.x + 0.45f * fs, box.y + 1.45f * fs, kDim,
+    text(c, c.fonts.sans, box.x + 0.45f * fs, box.y + 1.45f * fs, c.theme.text_dim,
          "\u221A(a\u2099\u2032\u00B2 + \u03A9\u2099\u00B2a\u2099\u00B2): bar now, tick peak", 0.0f,
          0.75f);
     return;
@@ -270,9 +274,9 @@ void draw_modes(Canvas& c) {
   for (int n = 0; n < count; ++n) {
     const float x = m.px(n);
     const float y = m.py(d.mode_amplitude[n] / d.mode_scale);
-    c.draw->AddRectFilled(ImVec2(x - half, y), ImVec2(x + half, a.bottom()), col(kBar));
+    c.draw->AddRectFilled(ImVec2(x - half, y), ImVec2(x + half, a.bottom()), col(c.theme.bar));
     const float peak = m.py(d.mode_peak[n] / d.mode_scale);  // the largest so far
-    c.draw->AddLine(ImVec2(x - half, peak), ImVec2(x + half, peak), col(kText), 1.5f);
+    c.draw->AddLine(ImVec2(x - half, peak), ImVec2(x + half, peak), col(c.theme.text), 1.5f);
   }
 }
 
@@ -293,9 +297,9 @@ bool same_still_parts(const OverlayData& a, const OverlayData& b) {
 
 namespace cb {
 
-OverlayRgb overlay_strain_rgb(float s) {
-  if (std::isnan(s)) return kOverlayBackground;
-  const Color k = strain_color(s);
+OverlayRgb overlay_strain_rgb(float s, ThemeName name) {
+  if (std::isnan(s)) return theme(name).background;
+  const Color k = strain_color(s, name);
   const auto byte = [](float v) {
     return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
   };

@@ -46,6 +46,7 @@ struct Canvas {
   Marker marker;
   const OverlayLayout& layout;
   const OverlayData& data;
+  const Theme& theme;
   float title_right = 0;  // where the current panel's title ends (notes keep clear of it)
 };
 
@@ -63,11 +64,11 @@ bool same_still_parts(const OverlayData& a, const OverlayData& b);
 // The space-time picture at the plot area's size, one RGBA8 pixel per screen pixel, rows
 // bottom-up (GL's order), each pixel the cell under its centre; the background where there is
 // no row yet. Copied into the frame 1:1, the cheapest way llvmpipe has to put pixels there.
-void compose_spacetime(const OverlayLayout& layout, const OverlayData& d,
+void compose_spacetime(const OverlayLayout& layout, const OverlayData& d, ThemeName theme,
                        std::vector<std::uint32_t>& pixels);
 
 // overlay_strain_rgb as an RGBA8 texel in memory order.
-std::uint32_t spacetime_texel(float s);
+std::uint32_t spacetime_texel(float s, ThemeName theme);
 
 // The marker disc's coverage at texel (x, y) of a `size` x `size` sprite, 0..255.
 unsigned char marker_coverage(int x, int y, int size, float radius);

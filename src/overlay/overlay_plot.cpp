@@ -122,18 +122,6 @@ float text_sub(Canvas& c, ImFont* font, float x, float y, const OverlayRgb& colo
   return x;
 }
 
-Ticks nice_ticks(double lo, double hi, int count) {
-  Ticks t;
-  const double raw = (hi - lo) / std::max(1, count);
-  if (!(raw > 0) || !std::isfinite(raw)) return t;
-  const double mag = std::pow(10.0, std::floor(std::log10(raw)));
-  const double norm = raw / mag;
-  t.step = (norm <= 1.0 ? 1.0 : norm <= 2.0 ? 2.0 : norm <= 5.0 ? 5.0 : 10.0) * mag;
-  for (double v = std::ceil(lo / t.step) * t.step; v <= hi + 1e-9 * t.step; v += t.step)
-    t.values.push_back(std::abs(v) < 1e-9 * t.step ? 0.0 : v);
-  return t;
-}
-
 void dashed_hline(Canvas& c, float x0, float x1, float y, ImU32 colour, float width, float dash) {
   for (float x = x0; x < x1; x += 2.0f * dash)
     c.draw->AddLine(ImVec2(x, y), ImVec2(std::min(x + dash, x1), y), colour, width);
@@ -146,9 +134,9 @@ void dashed_vline(Canvas& c, float x, float y0, float y1, ImU32 colour, float wi
 void panel(Canvas& c, const Box& box, const std::string& title) {
   const float fs = c.layout.font_px;
   c.draw->AddRect(ImVec2(box.x + 0.5f, box.y + 0.5f),
-                  ImVec2(box.right() - 0.5f, box.bottom() - 0.5f), col(kBorder), 0.3f * fs, 0,
+                  ImVec2(box.right() - 0.5f, box.bottom() - 0.5f), col(c.theme.border), 0.3f * fs, 0,
                   1.0f);
-  c.title_right = text_sub(c, c.fonts.bold, box.x + 0.45f * fs, box.y + 0.3f * fs, kText, title);
+  c.title_right = text_sub(c, c.fonts.bold, box.x + 0.45f * fs, box.y + 0.3f * fs, c.theme.text, title);
 }
 
 // A small note right-aligned in the title row; false (nothing drawn) when it would touch the
@@ -156,7 +144,7 @@ void panel(Canvas& c, const Box& box, const std::string& title) {
 bool title_note(Canvas& c, const Box& box, const std::string& note) {
   const float fs = c.layout.font_px, right = box.right() - 0.45f * fs;
   if (right - text_width(c.fonts.sans, 0.8f * fs, note) < c.title_right + 0.6f * fs) return false;
-  text(c, c.fonts.sans, right, box.y + 0.4f * fs, kDim, note, 1.0f, 0.8f);
+  text(c, c.fonts.sans, right, box.y + 0.4f * fs, c.theme.text_dim, note, 1.0f, 0.8f);
   return true;
 }
 
@@ -173,22 +161,22 @@ void axes(Canvas& c, const Box& box, const PlotMapping& m, const Ticks& xt, cons
   for (std::size_t i = 0; i < yt.values.size(); ++i) {
     const double v = yt.values[i];
     const float y = std::round(m.py(v)) + 0.5f;
-    if (grid) c.draw->AddLine(ImVec2(a.x, y), ImVec2(a.right(), y), col(kGrid), 1.0f);
+    if (grid) c.draw->AddLine(ImVec2(a.x, y), ImVec2(a.right(), y), col(c.theme.grid), 1.0f);
     const std::string label = yt.labels.empty() ? tick_label(v, yf) : yt.labels[i];
-    text(c, c.fonts.mono, a.x - 0.3f * fs, y - 0.55f * fs, kDim, label, 1.0f, 0.85f);
+    text(c, c.fonts.sans, a.x - 0.3f * fs, y - 0.55f * fs, c.theme.text_dim, label, 1.0f, 0.85f);
   }
   for (std::size_t i = 0; i < xt.values.size(); ++i) {
     const double v = xt.values[i];
     const float x = std::round(m.px(v)) + 0.5f;
-    if (grid) c.draw->AddLine(ImVec2(x, a.y), ImVec2(x, a.bottom()), col(kGrid), 1.0f);
+    if (grid) c.draw->AddLine(ImVec2(x, a.y), ImVec2(x, a.bottom()), col(c.theme.grid), 1.0f);
     // The last label may not run past the panel: right-align it at the edge.
     const std::string label = xt.labels.empty() ? x_tick_label(v, xt) : xt.labels[i];
     const float w = text_width(c.fonts.mono, 0.85f * fs, label);
     const float align = x + 0.5f * w > a.right() + 0.5f * fs ? 1.0f : 0.5f;
-    text(c, c.fonts.mono, x, a.bottom() + 0.2f * fs, kDim, label, align, 0.85f);
+    text(c, c.fonts.sans, x, a.bottom() + 0.2f * fs, c.theme.text_dim, label, align, 0.85f);
   }
-  c.draw->AddRect(ImVec2(a.x, a.y), ImVec2(a.right(), a.bottom()), col(kFrame), 0.0f, 0, 1.0f);
-  text(c, c.fonts.sans, box.x + 0.45f * fs, a.bottom() + 0.2f * fs, kDim, x_name, 0.0f, 0.85f);
+  c.draw->AddRect(ImVec2(a.x, a.y), ImVec2(a.right(), a.bottom()), col(c.theme.axis), 0.0f, 0, 1.0f);
+  text(c, c.fonts.sans, box.x + 0.45f * fs, a.bottom() + 0.2f * fs, c.theme.text_dim, x_name, 0.0f, 0.85f);
   if (yf.exponent != 0 && yt.labels.empty()) {  // "×10⁻³" above the y labels
     std::string e = "\u00D710";
     for (char ch : std::to_string(yf.exponent)) {
@@ -197,7 +185,7 @@ void axes(Canvas& c, const Box& box, const PlotMapping& m, const Ticks& xt, cons
       e += ch == '-' ? "\u207B" : kSup[ch - '0'];
     }
     if (!title_note(c, box, e))  // else inside the plot's top-right corner
-      text(c, c.fonts.sans, a.right() - 0.3f * fs, a.y + 0.2f * fs, kDim, e, 1.0f, 0.8f);
+      text(c, c.fonts.sans, a.right() - 0.3f * fs, a.y + 0.2f * fs, c.theme.text_dim, e, 1.0f, 0.8f);
   }
 }
 
@@ -207,7 +195,7 @@ void legend(Canvas& c, const Box& a, float y, const std::vector<LegendEntry>& en
   float width = 0.4f * fs;
   for (const auto& e : entries) width += 1.5f * fs + text_width(c.fonts.sans, size, e.label);
   c.draw->AddRectFilled(ImVec2(a.x + 0.3f * fs, y), ImVec2(a.x + 0.3f * fs + width, y + 1.2f * fs),
-                        col(kOverlayBackground, 0.85f), 0.2f * fs);
+                        col(c.theme.background, 0.85f), 0.2f * fs);
   float x = a.x + 0.6f * fs;
   const float mid = y + 0.6f * fs;
   for (const auto& e : entries) {
@@ -219,7 +207,7 @@ void legend(Canvas& c, const Box& a, float y, const std::vector<LegendEntry>& en
     } else {
       c.draw->AddLine(ImVec2(x, mid), ImVec2(x + 0.9f * fs, mid), col(e.colour), c.layout.line_px);
     }
-    x = text(c, c.fonts.sans, x + 1.15f * fs, y + 0.1f * fs, kText, e.label, 0.0f, 0.85f) +
+    x = text(c, c.fonts.sans, x + 1.15f * fs, y + 0.1f * fs, c.theme.text, e.label, 0.0f, 0.85f) +
         0.35f * fs;
   }
 }
@@ -269,7 +257,7 @@ void polyline(Canvas& c, const PlotMapping& m, const std::vector<double>& t,
 
 void time_cursor(Canvas& c, const PlotMapping& m) {
   const float x = std::round(m.px(c.data.tau)) + 0.5f;
-  c.draw->AddLine(ImVec2(x, m.area.y), ImVec2(x, m.area.bottom()), col(kCursor, 0.7f), 1.0f);
+  c.draw->AddLine(ImVec2(x, m.area.y), ImVec2(x, m.area.bottom()), col(c.theme.cursor, 0.7f), 1.0f);
 }
 
 }  // namespace cb::overlay_detail

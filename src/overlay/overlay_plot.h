@@ -4,23 +4,10 @@
 #include <string>
 #include <vector>
 
+#include "figures/axis_ticks.h"
 #include "overlay/overlay_panels.h"
 
 namespace cb::overlay_detail {
-
-// The theme, on the snapshot's dark background (overlay.h has the background and the series).
-constexpr OverlayRgb kText{224, 224, 230};
-constexpr OverlayRgb kDim{150, 153, 160};
-constexpr OverlayRgb kBorder{58, 60, 67};
-constexpr OverlayRgb kGrid{40, 42, 48};
-constexpr OverlayRgb kFrame{78, 80, 88};
-constexpr OverlayRgb kThreshold{213, 94, 0};  // Okabe-Ito vermillion
-constexpr OverlayRgb kCursor{110, 112, 120};
-constexpr OverlayRgb kTotal{236, 236, 240};
-constexpr OverlayRgb kKinetic{204, 121, 167};   // Okabe-Ito reddish purple
-constexpr OverlayRgb kPotential{240, 228, 66};  // Okabe-Ito yellow
-constexpr OverlayRgb kBar{86, 180, 233};
-constexpr OverlayRgb kBreak{255, 200, 90};  // the chain's break markers' amber
 
 ImU32 col(const OverlayRgb& c, float alpha = 1.0f);
 std::string format(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
@@ -34,13 +21,9 @@ float text(Canvas& c, ImFont* font, float x, float y, const OverlayRgb& colour,
 float text_sub(Canvas& c, ImFont* font, float x, float y, const OverlayRgb& colour,
                const std::string& s, float align = 0.0f, float scale = 1.0f);
 
-// Ticks at 1, 2 or 5 times a power of ten, at most about `count` of them in [lo, hi].
-struct Ticks {
-  std::vector<double> values;
-  double step = 1.0;
-  std::vector<std::string> labels;  // one per value; empty: the values, formatted
-};
-Ticks nice_ticks(double lo, double hi, int count);
+// Ticks and nice_ticks live with the figures (figures/axis_ticks.h): one rule for both.
+using cb::nice_ticks;
+using cb::Ticks;
 
 void dashed_hline(Canvas& c, float x0, float x1, float y, ImU32 colour, float width, float dash);
 void dashed_vline(Canvas& c, float x, float y0, float y1, ImU32 colour, float width, float dash);

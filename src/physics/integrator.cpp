@@ -8,6 +8,7 @@
 
 #include "physics/crossing.h"
 #include "physics/rk4_tile.h"
+#include "physics/run_loop.h"
 #include "physics/worker_pool.h"
 
 namespace cb {
@@ -26,11 +27,15 @@ struct Integrator::Impl {
   std::vector<detail::StepOutput> outputs;   // one per worker
   std::vector<std::pair<int, int>> ranges;   // beads [first, last) per worker, tile-aligned
   std::size_t next_kick = 0;
+  SimdPath simd;
+  detail::Rk4Beads kernel;
 
-  Impl(int beads, int threads)
+  Impl(int beads, int threads, SimdPath path)
       : psi_next(beads),
         vel_next(beads),
-        pool(std::clamp(threads, 1, 1 + beads / kBeadsPerThread)) {
+        pool(std::clamp(threads, 1, 1 + beads / kBeadsPerThread)),
+        simd(path),
+        kernel(detail::rk4_kernel(path)) {
     const int workers = pool.size();
     scratch.resize(workers);
     outputs.resize(workers);
@@ -47,19 +52,22 @@ Integrator::Integrator(const ChainParams& params, Forcing forcing, IntegratorOpt
   assert(params_.beads >= 1 && options_.dt > 0.0);
   state_.psi.assign(params_.beads, 0.0);
   state_.vel.assign(params_.beads, 0.0);
-  impl_ = std::make_unique<Impl>(params_.beads, options_.threads);
+  impl_ = std::make_unique<Impl>(params_.beads, options_.threads,
+                                 options_.simd.value_or(active_simd()));
 }
 
 Integrator::~Integrator() = default;
+
+SimdPath Integrator::simd() const {
+  return impl_->simd;
+}
 
 double Integrator::force_now() const {
   return state_.string_broken ? 0.0 : forcing_(state_.tau);
 }
 
 bool Integrator::advance_to(std::int64_t target_step) {
-  while (state_.step < target_step)
-    if (!step()) return false;
-  return true;
+  return run_until(*this, StopRule{target_step, std::nullopt, false, nullptr}) != RunEnd::Failed;
 }
 
 bool Integrator::step() {
@@ -134,7 +142,7 @@ bool Integrator::rk4(double ta, double tb, bool end_is_breakpoint) {
   in.stretch_only = params_.break_on == BreakMode::Stretch;
   im.pool.run([&](int w) {
     im.outputs[w].reset();
-    detail::rk4_beads(in, im.ranges[w].first, im.ranges[w].second, im.scratch[w], im.outputs[w]);
+    im.kernel(in, im.ranges[w].first, im.ranges[w].second, im.scratch[w], im.outputs[w]);
   });
   stage_dissipation_ = 0.0;
   stage_work_ = 0.0;

@@ -10,17 +10,22 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "physics/chain.h"
 #include "physics/forcing.h"
+#include "physics/simd.h"
 
 namespace cb {
 
 struct IntegratorOptions {
   double dt = 0.01;
   int threads = 1;  // worker threads for large N; 1 = run on the caller's thread
+  // The kernel's instruction set; empty: the process's (active_simd()). Any path gives
+  // bit-identical results.
+  std::optional<SimdPath> simd = std::nullopt;
 };
 
 class Integrator {
@@ -34,12 +39,14 @@ class Integrator {
   // breakpoints and breaking springs. Returns false and sets error() when the state
   // stops being finite.
   bool step();
-  // Steps until `target_step`; stops early on a non-finite state.
+  // Steps until `target_step`; stops early on a non-finite state. Shorthand for run_until
+  // (physics/run_loop.h) with a step count as the only stop rule.
   bool advance_to(std::int64_t target_step);
 
   const ChainState& state() const { return state_; }
   const ChainParams& params() const { return params_; }
   double dt() const { return options_.dt; }
+  SimdPath simd() const;     // the instruction set the kernel runs on
   double force_now() const;  // f(tau) acting on bead N now (0 after the pull string broke)
   const std::string& error() const { return error_; }
 

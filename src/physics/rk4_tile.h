@@ -12,6 +12,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "physics/simd.h"
+
 namespace cb::detail {
 
 inline constexpr int kHalo = 5;
@@ -57,10 +59,23 @@ struct TileScratch {
   std::vector<int> specials;      // local indices that need the general stencil, sorted
   const double* x_new = nullptr;  // where the last tile's new state is (xs/vs or xt/vt)
   const double* v_new = nullptr;
+  int zeroed_origin = 0, zeroed_len = -1;  // the window whose outside beads xs..vt hold +0
   TileScratch();
 };
 
-// Integrates beads [first, last) (0-based) for one step.
+// Integrates beads [first, last) (0-based) for one step: the same kernel compiled for each
+// instruction set (rk4_tile_kernel.inc); rk4_kernel() picks one.
+using Rk4Beads = void (*)(const StepInput& in, int first, int last, TileScratch& scratch,
+                          StepOutput& out);
+namespace sse2 {
 void rk4_beads(const StepInput& in, int first, int last, TileScratch& scratch, StepOutput& out);
+}
+namespace avx2 {
+void rk4_beads(const StepInput& in, int first, int last, TileScratch& scratch, StepOutput& out);
+}
+namespace avx512 {
+void rk4_beads(const StepInput& in, int first, int last, TileScratch& scratch, StepOutput& out);
+}
+Rk4Beads rk4_kernel(SimdPath path);
 
 }  // namespace cb::detail

@@ -9,7 +9,8 @@
 #include "output/yuv420.h"
 #include "render/shader_interface.h"
 #include "render/shader_program.h"
-#include "render/text.h"
+#include "render/glyph_atlas.h"
+#include "text/text_layout.h"
 
 namespace cb {
 
@@ -23,6 +24,11 @@ struct QuadInstance {
 };
 struct DiscInstance {
   float center[3];  // x, y, radius
+  float color[4];
+};
+struct GlyphInstance {
+  float rect[4];  // x, y, width, height in pixels
+  float uv[4];    // atlas pixels while a layer's labels are laid out, then 0..1
   float color[4];
 };
 struct TriangleVertex {
@@ -113,14 +119,16 @@ struct InstancedBatch {
 struct Renderer::Impl {
   int width, height;
   GLuint fbo = 0, color = 0;
-  GLuint quad_program = 0, disc_program = 0, triangle_program = 0;
-  InstancedBatch quads, discs;
+  GLuint quad_program = 0, disc_program = 0, triangle_program = 0, glyph_program = 0;
+  InstancedBatch quads, discs, glyphs;
+  GLuint atlas_texture = 0;
+  GlyphAtlas atlas;
   GLuint triangle_vao = 0, triangle_buffer = 0;
   // Scratch reused frame to frame: no allocation once warmed up.
   std::vector<QuadInstance> quad_data;
   std::vector<DiscInstance> disc_data;
   std::vector<TriangleVertex> triangle_data;
-  std::vector<Rect> text_rects;
+  std::vector<GlyphInstance> glyph_data;
   std::vector<std::uint8_t> row;  // for flipping rows on readback
   std::vector<std::uint8_t> raw;  // read_yuv420's RGBA, as GL gives it (bottom-up)
 
@@ -140,7 +148,11 @@ struct Renderer::Impl {
     quad_program = build_program("quad");
     disc_program = build_program("disc");
     triangle_program = build_program("triangle");
-    for (GLuint p : {quad_program, disc_program, triangle_program}) set_viewport_uniform(p);
+    glyph_program = build_program("glyph");
+    for (GLuint p : {quad_program, disc_program, triangle_program, glyph_program})
+      set_viewport_uniform(p);
+    glUseProgram(glyph_program);
+    glUniform1i(glGetUniformLocation(glyph_program, "u_atlas"), 0);
 
     const float quad_corners[] = {0, -1, 1, -1, 0, 1, 1, 1};  // triangle strip
     quads.create(quad_corners, 4);
@@ -154,6 +166,14 @@ struct Renderer::Impl {
     const int ds = sizeof(DiscInstance);
     discs.attribute(shader::kCenter, 3, ds, offsetof(DiscInstance, center));
     discs.attribute(shader::kColor, 4, ds, offsetof(DiscInstance, color));
+
+    const float glyph_corners[] = {0, 0, 1, 0, 0, 1, 1, 1};
+    glyphs.create(glyph_corners, 4);
+    const int gs = sizeof(GlyphInstance);
+    glyphs.attribute(shader::kRect, 4, gs, offsetof(GlyphInstance, rect));
+    glyphs.attribute(shader::kUv, 4, gs, offsetof(GlyphInstance, uv));
+    glyphs.attribute(shader::kColor, 4, gs, offsetof(GlyphInstance, color));
+    glGenTextures(1, &atlas_texture);
 
     glGenVertexArrays(1, &triangle_vao);
     glBindVertexArray(triangle_vao);
@@ -172,6 +192,9 @@ struct Renderer::Impl {
   ~Impl() {
     quads.destroy();
     discs.destroy();
+    glyphs.destroy();
+    glDeleteTextures(1, &atlas_texture);
+    glDeleteProgram(glyph_program);
     glDeleteBuffers(1, &triangle_buffer);
     glDeleteVertexArrays(1, &triangle_vao);
     glDeleteProgram(quad_program);
@@ -240,10 +263,55 @@ struct Renderer::Impl {
       glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(disc_data.size()));
     }
 
-    text_rects.clear();
-    for (const Label& l : layer.labels) label_rects(l, text_rects);
-    for (const Rect& r : text_rects) quad_data.push_back(rect_instance(r));
-    draw_quads();
+    draw_labels(layer.labels);
+  }
+
+  // A label's glyphs on whole pixels: its `y` is the top of its capitals, so the baseline is
+  // a cap height below (text/text_layout.h places the glyphs along it).
+  void draw_labels(const std::vector<Label>& labels) {
+    if (labels.empty()) return;
+    glyph_data.clear();
+    for (const Label& l : labels) {
+      const TextLine line = layout_text(l.text, l.size, l.face);
+      const float x0 = std::round(l.x), baseline = std::round(l.y + line.cap_height);
+      for (const PlacedGlyph& g : line.glyphs) {
+        const GlyphAtlas::Entry& e = atlas.glyph(l.face, g.c, g.px);
+        if (e.width == 0 || e.height == 0) continue;
+        GlyphInstance gi{{x0 + static_cast<float>(g.x + e.left),
+                          baseline + static_cast<float>(g.dy + e.top),
+                          static_cast<float>(e.width), static_cast<float>(e.height)},
+                         {static_cast<float>(e.x), static_cast<float>(e.y),
+                          static_cast<float>(e.x + e.width), static_cast<float>(e.y + e.height)},
+                         {}};
+        copy_color(l.color, gi.color);
+        glyph_data.push_back(gi);
+      }
+    }
+    if (glyph_data.empty()) return;
+    // The atlas may have grown while the labels were laid out: normalise with its final size.
+    const float aw = static_cast<float>(atlas.width()), ah = static_cast<float>(atlas.height());
+    for (GlyphInstance& g : glyph_data) {
+      g.uv[0] /= aw;
+      g.uv[2] /= aw;
+      g.uv[1] /= ah;
+      g.uv[3] /= ah;
+    }
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, atlas_texture);
+    if (atlas.dirty()) {
+      glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, atlas.width(), atlas.height(), 0, GL_RED,
+                   GL_UNSIGNED_BYTE, atlas.pixels().data());
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+      atlas.mark_uploaded();
+    }
+    use(glyph_program);
+    glBindVertexArray(glyphs.vao);
+    upload(glyphs.instances, glyph_data);
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(glyph_data.size()));
   }
 };
 

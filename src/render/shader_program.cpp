@@ -24,10 +24,12 @@ const char* preamble() {
          "#define LOC_COLOR 2\n"
          "#define LOC_STYLE 3\n"
          "#define LOC_CENTER 4\n"
-         "#define LOC_POSITION 5\n";
+         "#define LOC_POSITION 5\n"
+         "#define LOC_RECT 6\n"
+         "#define LOC_UV 7\n";
 }
 static_assert(kCorner == 0 && kEnds == 1 && kColor == 2 && kStyle == 3 && kCenter == 4 &&
-                  kPosition == 5,
+                  kPosition == 5 && kRect == 6 && kUv == 7,
               "keep preamble() in step with the constants");
 
 }  // namespace shader

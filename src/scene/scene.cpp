@@ -43,8 +43,8 @@
 //                         # Gamma / (2 m omega0) (both given: they must agree to 1e-12)
 //   input = "dimensionless"  # or "si": the scene's numbers are seconds and newtons
 //
-//   [render]                       # reserved for the renderer: width, height, fps, speed,
-//                                  # view, overlay are accepted and kept as raw TOML text
+//   [render]                       # optional: width, height (16..16384 pixels), fps (0..240),
+//                                  # speed (> 0), view, overlay and overlay_* switches
 //
 // ==== Units ================================================================================
 // Eq. (dimless) uses tau = omega0 t, psi = y / l, f = F / (K l), gamma = Gamma / (2 m omega0)
@@ -56,6 +56,12 @@
 //                            so s = S omega0 / (K l) (bead N's kick S/m in units of l omega0)
 //   expr: t is seconds and the value newtons; the text is rewritten to the dimensionless form.
 // Without [units], or with input = "dimensionless", every number is already dimensionless.
+//
+// ==== Reading and checking =================================================================
+// This file and scene_reader/sections/drive/render.cpp turn text into a SceneDesc: types,
+// missing and unknown keys, names, the table file. Every range, unit and stability rule is
+// validate()'s (scene_validate.cpp), run on the in-memory scene, so --set, sweep, the viewer
+// and the Python module meet the same rules with the same messages.
 //
 // ==== Errors ===============================================================================
 // Every user mistake throws SceneError "file:line:column: what is wrong; how to fix it",
@@ -148,12 +154,14 @@ SceneDesc parse_scene(const std::string& text, const std::string& path,
   const scene_detail::Conversion c = scene_detail::conversion_for(d.units);
   d.chain = scene_detail::read_chain(r, d.units, c);
   d.drive = scene_detail::read_drive(r, c, file.parent_path().string());
-  d.integrator = scene_detail::read_integrator(r, c, d.chain);
+  d.integrator = scene_detail::read_integrator(r, c);
   d.render = read_render(r);
+  d.origins = r.origins();
+  validate(d);
   return d;
 }
 
-SceneDesc load_scene(const std::string& path, const std::vector<Override>& overrides) {
+std::string read_scene_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in || std::filesystem::is_directory(path))
     throw SceneError(path +
@@ -161,7 +169,11 @@ SceneDesc load_scene(const std::string& path, const std::vector<Override>& overr
                      "ship with chainbreak)");
   std::ostringstream text;
   text << in.rdbuf();
-  return parse_scene(text.str(), path, overrides);
+  return text.str();
+}
+
+SceneDesc load_scene(const std::string& path, const std::vector<Override>& overrides) {
+  return parse_scene(read_scene_text(path), path, overrides);
 }
 
 }  // namespace cb

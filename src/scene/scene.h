@@ -4,6 +4,8 @@
 // can make is reported as "file:line:column: what is wrong, and how to fix it".
 #pragma once
 
+#include <functional>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -33,17 +35,43 @@ struct IntegratorDesc {
   std::optional<double> after_break;  // stop this long after the first break
 };
 
+// A run of more steps is a typo, not a plan: time is an integer step count (STYLE.md) and
+// would not even count its steps exactly. integrator.t_end / dt, and a render's steps.
+inline constexpr double kMaxRunSteps = 1e12;
+
+// Frame sizes and rates every path accepts (scene [render], --size, --fps).
+inline constexpr int kMinFrameSide = 16, kMaxFrameSide = 16384;  // pixels
+inline constexpr double kMaxFps = 240.0;
+
 // [render]: how frames and videos of the scene look. Validated here; the renderer reads it.
 struct RenderDesc {
   int width = 1280, height = 720;     // pixels
   double fps = 30.0;                  // frames per second of video
   double speed = 10.0;                // tau per second of video
   std::string view = "longitudinal";  // longitudinal | transverse | both
+  // dark (projector; the default for videos: the strain map's tension end is brightest and
+  // reads best on black in a dim hall) | light (white, for handouts and papers)
+  std::string theme = "dark";
+  // Slow motion around every break: the video runs at slowmo x its speed within
+  // +-slowmo_window tau of each break (1: off).
+  double slowmo = 1.0;
+  double slowmo_window = 2.0;
+  // Zoom: "" (the whole chain), "J0:J1" (springs), "auto[:W]" or "break[:W]" (app/zoom.h).
+  std::string zoom;
+  // A line of text under the chain, and seconds of title card opening the video (0: none).
+  std::string caption;
+  double title_card = 0.0;
   bool overlay = true;                // videos: the HUD and plots under the chain (src/overlay)
   // Which parts of the overlay: the HUD; phi_1, phi_N/2, phi_N and energy vs tau; the
   // space-time picture of the strain; the normal-mode bars.
   bool overlay_hud = true, overlay_plots = true, overlay_spacetime = true, overlay_modes = true;
 };
+
+// Where each value of a scene came from, for error messages: "chain.gamma" ->
+// "scenes/x.toml:3:9" or "--set chain.gamma=-1"; a section ("chain") -> where its table
+// starts; "" -> the file itself. Empty for a scene built in memory (the viewer's edits, the
+// Python module): messages then start at the key's name.
+using KeyOrigins = std::map<std::string, std::string, std::less<>>;
 
 struct SceneDesc {
   std::string path;  // as given
@@ -54,11 +82,27 @@ struct SceneDesc {
   IntegratorDesc integrator;
   std::optional<Units> units;
   RenderDesc render;
+  KeyOrigins origins;
 };
 
 struct SceneError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+// The one check of a scene's values, apart from parsing: units, ranges, RK4's stability limit,
+// drive limits, the [render] settings. The TOML reader, --set, sweep's values, the viewer's
+// edits and the Python module all call it on the in-memory (dimensionless) scene. Throws
+// SceneError "<where the key came from>: <what is wrong>; <how to fix it>", numbers shown in
+// the scene's own units (seconds and newtons for input = "si").
+void validate(const SceneDesc& scene);
+
+// Sets one numeric key as a scene file would give it (in the scene's units, converted to
+// Eq. (dimless) form), records `origin` as where the value came from, and validates the
+// result. Returns false, changing nothing, for a key this cannot set in memory ([units] keys
+// change how every other number is read; strings and arrays are not numbers): the caller
+// then re-reads the scene text with an Override. Throws SceneError for a bad value.
+bool set_scene_number(SceneDesc& scene, const std::string& key, double value,
+                      const std::string& origin);
 
 // "section.key=value": value is TOML (numbers, true/false, "strings", [arrays]);
 // a bare word that is not a TOML value is taken as a string (drive.type=step).
@@ -72,5 +116,23 @@ Override parse_override(const std::string& text);  // throws SceneError
 SceneDesc load_scene(const std::string& path, const std::vector<Override>& overrides = {});
 SceneDesc parse_scene(const std::string& text, const std::string& path,
                       const std::vector<Override>& overrides = {});
+// The scene file's text (what load_scene parses); throws SceneError when it cannot be read.
+std::string read_scene_text(const std::string& path);
+
+// The scenes of a sweep: one scene file (read once) and its overrides, with one numeric key
+// set to each value in turn by set_scene_number, or, for a key it cannot set, by parsing the
+// text again with the value as an override.
+class SceneVariations {
+ public:
+  SceneVariations(std::string path, std::vector<Override> overrides);  // throws SceneError
+  // `origin` names the option that gave the value in error messages.
+  SceneDesc with(const std::string& key, double value, const std::string& origin) const;
+
+ private:
+  std::string path_;
+  std::vector<Override> overrides_;
+  std::string text_;
+  std::optional<SceneDesc> base_;
+};
 
 }  // namespace cb

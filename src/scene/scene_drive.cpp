@@ -20,26 +20,14 @@ std::string needs(const char* type, const char* what) {
 void read_impulses(const SceneReader& r, const Conversion& c, DriveDesc& d) {
   const auto times = r.numbers("drive", "times");
   if (!times) r.fail_missing("drive", "times", needs("impulses", "the kick times"));
-  if (times->empty())
-    r.fail("drive", "times",
-           "drive.times is empty; give at least one kick time, e.g. times = [0.0, 30.0]");
-  for (std::size_t i = 0; i < times->size(); ++i)
-    if ((*times)[i] < 0.0)
-      r.fail("drive", "times",
-             "drive.times[" + std::to_string(i) + "] = " + format_exact((*times)[i]) +
-                 " is negative; kick times count from t0, so use values >= 0 (or move t0)");
   const auto strengths = r.numbers("drive", "strengths");
-  if (strengths && strengths->size() != times->size())
-    r.fail("drive", "strengths",
-           "drive.strengths has " + std::to_string(strengths->size()) +
-               " entries but drive.times has " + std::to_string(times->size()) +
-               "; give one strength per kick time, or remove strengths for kicks of 1");
   for (double t : *times) d.times.push_back(c.time(t));
   // Kicks default to strength 1 in the scene's units (1 N s for SI input), so with SI input
-  // the converted defaults are written out.
-  if (strengths || c.si)
-    for (std::size_t i = 0; i < times->size(); ++i)
-      d.strengths.push_back(c.impulse(strengths ? (*strengths)[i] : 1.0));
+  // the converted defaults are written out. validate() checks the counts agree.
+  if (strengths)
+    for (double s : *strengths) d.strengths.push_back(c.impulse(s));
+  else if (c.si)
+    d.strengths.assign(times->size(), c.impulse(1.0));
 }
 
 // The table's rows as the scene gives them, before unit conversion: inline (`points`, tau
@@ -54,13 +42,9 @@ void read_table_rows(const SceneReader& r, const std::string& scene_dir, DriveDe
       r.fail("drive", "points",
              "drive.points holds tau, f pairs: an even count of numbers, at least two pairs, "
              "e.g. points = [0.0, 0.0, 50.0, 1.0]");
-    for (std::size_t i = 0; i < points->size(); i += 2) {
-      if (!d.table.empty() && (*points)[i] <= d.table.back().first)
-        r.fail("drive", "points",
-               "drive.points: tau must increase from pair to pair (pair " +
-                   std::to_string(i / 2 + 1) + " has tau = " + format_exact((*points)[i]) + ")");
+    // validate() checks that tau increases.
+    for (std::size_t i = 0; i < points->size(); i += 2)
       d.table.emplace_back((*points)[i], (*points)[i + 1]);
-    }
     return;
   }
   d.table_file = r.require_string("drive", "file", needs("table", "a CSV file of tau,f rows"));
@@ -86,13 +70,14 @@ void read_table(const SceneReader& r, const Conversion& c, const std::string& sc
 
 void read_expr(const SceneReader& r, const Conversion& c, DriveDesc& d) {
   d.expr = r.require_string("drive", "expr", needs("expr", "an expression in t"));
-  // Compile now so that a typo is reported against the scene, not mid-run.
+  if (!c.si) return;  // validate() compiles it
+  // Compiled as the user wrote it first, so that muParser's message quotes their text.
   try {
     make_forcing(d);
   } catch (const DriveError& e) {
     r.fail("drive", "expr", std::string(e.what()));
   }
-  if (c.si) d.expr = expr_to_dimensionless(d.expr, c);
+  d.expr = expr_to_dimensionless(d.expr, c);
 }
 
 }  // namespace
@@ -110,14 +95,7 @@ DriveDesc read_drive(const SceneReader& r, const Conversion& c, const std::strin
   const auto beta = r.number("drive", "beta");
   const auto period = r.number("drive", "period");
   const auto t0 = r.number("drive", "t0");
-  if (period && *period <= 0.0)
-    r.fail("drive", "period",
-           "drive.period must be > 0, got " + format_exact(*period) +
-               "; write e.g. period = 120.0 (4N resonates with the chain's slowest mode)");
-  if (t0 && *t0 < 0.0)
-    r.fail("drive", "t0",
-           "drive.t0 must be >= 0 (the chain starts at rest at tau = 0), got " + format_exact(*t0) +
-               "; write e.g. t0 = 0.0");
+  if (period) d.period = c.time(*period);  // checked by validate() whatever the type
   d.t0 = c.time(t0.value_or(0.0));
 
   switch (d.type) {
@@ -133,7 +111,6 @@ DriveDesc read_drive(const SceneReader& r, const Conversion& c, const std::strin
       if (!amplitude) r.fail_missing("drive", "amplitude", needs("sine", "the amplitude"));
       if (!period) r.fail_missing("drive", "period", needs("sine", "the period"));
       d.amplitude = c.force(*amplitude);
-      d.period = c.time(*period);
       break;
     case DriveType::Impulses:
       read_impulses(r, c, d);

@@ -52,6 +52,12 @@ constexpr KeySpec kSchema[] = {
     {"render", "fps", Kind::Number, "fps = 30"},
     {"render", "speed", Kind::Number, "speed = 10.0"},
     {"render", "view", Kind::String, "view = \"longitudinal\""},
+    {"render", "theme", Kind::String, "theme = \"dark\""},
+    {"render", "slowmo", Kind::Number, "slowmo = 0.1"},
+    {"render", "slowmo_window", Kind::Number, "slowmo_window = 2.0"},
+    {"render", "zoom", Kind::String, "zoom = \"auto\""},
+    {"render", "caption", Kind::String, "caption = \"A slow pull breaks the pulled end\""},
+    {"render", "title_card", Kind::Number, "title_card = 3.0"},
     {"render", "overlay", Kind::Bool, "overlay = true"},
     {"render", "overlay_hud", Kind::Bool, "overlay_hud = true"},
     {"render", "overlay_plots", Kind::Bool, "overlay_plots = true"},
@@ -200,13 +206,27 @@ std::string SceneReader::where(std::string_view section, std::string_view key) c
   if (auto it = origin_.find(dotted(section, key)); it != origin_.end()) return it->second;
   if (const toml::node* n = node(section, key); n && n->source().begin.line > 0)
     return position(n->source());
-  // The key is missing: point at its table, which may itself come from an override.
+  return section_where(section);
+}
+
+// Where a missing key of `section` would go: its table, which may itself come from an
+// override, or the top of the file.
+std::string SceneReader::section_where(std::string_view section) const {
   if (const toml::node* table = section.empty() ? &root_ : root_.get(section)) {
     if (table->source().begin.line > 0) return position(table->source());
     for (const auto& [name, text] : origin_)
       if (name.rfind(std::string(section) + ".", 0) == 0) return text;
   }
   return path_ + ":1:1";
+}
+
+KeyOrigins SceneReader::origins() const {
+  KeyOrigins out;
+  out[""] = path_ + ":1:1";
+  for (std::string_view section : kSections) out[std::string(section)] = section_where(section);
+  for (const KeySpec& k : kSchema)
+    if (has(k.section, k.key)) out[dotted(k.section, k.key)] = where(k.section, k.key);
+  return out;
 }
 
 void SceneReader::fail(std::string_view section, std::string_view key,

@@ -73,6 +73,8 @@ class SceneReader {
                              const std::string& why = {}) const;
 
   const std::string& path() const { return path_; }
+  // Where every key present came from, and where each section starts (SceneDesc::origins).
+  KeyOrigins origins() const;
 
  private:
   std::string path_;
@@ -81,6 +83,7 @@ class SceneReader {
 
   const toml::node* node(std::string_view section, std::string_view key) const;
   std::string where(std::string_view section, std::string_view key) const;
+  std::string section_where(std::string_view section) const;
   std::string position(const toml::source_region& region) const;
   [[noreturn]] void fail_type(std::string_view section, std::string_view key, const toml::node& n,
                               std::string_view wanted) const;

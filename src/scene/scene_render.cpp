@@ -1,4 +1,7 @@
 // [render]: frame size, frame rate, simulation speed, view and overlay of the scene's videos.
+#include <algorithm>
+#include <cstdint>
+
 #include "scene/scene_sections.h"
 
 namespace cb::scene_detail {
@@ -8,41 +11,26 @@ namespace {
 int read_size(const SceneReader& r, std::string_view key, int fallback) {
   const auto v = r.integer("render", key);
   if (!v) return fallback;
-  if (*v < 16 || *v > 16384)
-    r.fail("render", key,
-           "render." + std::string(key) + " must be between 16 and 16384 pixels, got " +
-               std::to_string(*v) + "; write e.g. " +
-               std::string(find_key_spec("render", key)->example));
-  return static_cast<int>(*v);
-}
-
-double read_positive(const SceneReader& r, std::string_view key, double fallback,
-                     const char* unit) {
-  const auto v = r.number("render", key);
-  if (!v) return fallback;
-  if (!(*v > 0.0))
-    r.fail("render", key,
-           "render." + std::string(key) + " must be > 0 (" + unit + "), got " + format_exact(*v) +
-               "; write e.g. " + std::string(find_key_spec("render", key)->example));
-  return *v;
+  // Past what an int holds: clamped to a value validate() refuses with the same words.
+  return static_cast<int>(std::clamp<std::int64_t>(*v, -1, kMaxFrameSide + 1));
 }
 
 }  // namespace
 
+// The values are checked by validate() (scene_validate.cpp).
 RenderDesc read_render(const SceneReader& r) {
   RenderDesc d;
   d.width = read_size(r, "width", d.width);
   d.height = read_size(r, "height", d.height);
-  d.fps = read_positive(r, "fps", d.fps, "frames per second");
-  if (d.fps > 240.0)
-    r.fail("render", "fps",
-           "render.fps = " + format_exact(d.fps) + " is above 240; write e.g. fps = 60");
-  d.speed = read_positive(r, "speed", d.speed, "tau per second of video");
+  d.fps = r.number("render", "fps").value_or(d.fps);
+  d.speed = r.number("render", "speed").value_or(d.speed);
   d.view = r.string("render", "view").value_or(d.view);
-  if (d.view != "longitudinal" && d.view != "transverse" && d.view != "both")
-    r.fail("render", "view",
-           "unknown render.view '" + d.view + "'; " +
-               suggest(d.view, {"longitudinal", "transverse", "both"}, "\"", "\""));
+  d.theme = r.string("render", "theme").value_or(d.theme);
+  d.slowmo = r.number("render", "slowmo").value_or(d.slowmo);
+  d.slowmo_window = r.number("render", "slowmo_window").value_or(d.slowmo_window);
+  d.zoom = r.string("render", "zoom").value_or(d.zoom);  // checked against N by the app
+  d.caption = r.string("render", "caption").value_or(d.caption);
+  d.title_card = r.number("render", "title_card").value_or(d.title_card);
   d.overlay = r.boolean("render", "overlay").value_or(d.overlay);
   d.overlay_hud = r.boolean("render", "overlay_hud").value_or(d.overlay_hud);
   d.overlay_plots = r.boolean("render", "overlay_plots").value_or(d.overlay_plots);

@@ -1,5 +1,6 @@
 // Internal to src/scene: one reader per section of the schema (documented in scene.cpp).
-// Each validates its section and returns it in the dimensionless form of Eq. (dimless).
+// Each reads its section (types, missing keys, names) and returns it in the dimensionless
+// form of Eq. (dimless); validate() checks the values afterwards.
 #pragma once
 
 #include <optional>
@@ -19,6 +20,6 @@ ChainParams read_chain(const SceneReader& r, std::optional<Units>& units, const 
 // scene_dir: where drive.file is looked up when it is a relative path.
 DriveDesc read_drive(const SceneReader& r, const Conversion& c, const std::string& scene_dir);
 RenderDesc read_render(const SceneReader& r);
-IntegratorDesc read_integrator(const SceneReader& r, const Conversion& c, const ChainParams& chain);
+IntegratorDesc read_integrator(const SceneReader& r, const Conversion& c);
 
 }  // namespace cb::scene_detail

@@ -116,7 +116,10 @@ std::string write_scene(const SceneDesc& scene) {
   const RenderDesc& r = scene.render;
   out << "\n[render]\nwidth = " << r.width << "\nheight = " << r.height
       << "\nfps = " << number(r.fps) << "\nspeed = " << number(r.speed)
-      << "\nview = " << quoted(r.view) << "\n";
+      << "\nview = " << quoted(r.view) << "\ntheme = " << quoted(r.theme)
+      << "\nslowmo = " << number(r.slowmo) << "\nslowmo_window = " << number(r.slowmo_window)
+      << "\nzoom = " << quoted(r.zoom) << "\ncaption = " << quoted(r.caption)
+      << "\ntitle_card = " << number(r.title_card) << "\n";
   auto flag = [&](const char* key, bool value) {
     out << key << " = " << (value ? "true" : "false") << "\n";
   };

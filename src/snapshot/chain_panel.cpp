@@ -45,9 +45,9 @@ float f(double v) {
 std::string break_text(const BreakEvent& b) {
   char buffer[96];
   if (b.spring == 0) {
-    std::snprintf(buffer, sizeof buffer, "pull string broke, tau = %.2f", b.tau);
+    std::snprintf(buffer, sizeof buffer, "pull string broke, τ = %.2f", b.tau);
   } else {
-    std::snprintf(buffer, sizeof buffer, "spring %d broke, tau = %.2f", b.spring, b.tau);
+    std::snprintf(buffer, sizeof buffer, "spring %d broke, τ = %.2f", b.spring, b.tau);
   }
   return buffer;
 }
@@ -93,11 +93,11 @@ void draw_beads_and_springs(Frame& frame, const PanelLayout& p, const Placer& at
     const double ia = j == 1 ? 0.0 : inset;
     chain.springs.push_back(SpringInstance{f(a.x + ia * dx), f(a.y + ia * dy), f(b.x - inset * dx),
                                            f(b.y - inset * dy), p.spring_width, p.coils,
-                                           strain_color(phi / frame.strain_scale)});
+                                           strain_color(phi / frame.strain_scale, frame.style.theme)});
   });
   for (int j = 1; j <= frame.params.beads; ++j) {
     const Point c = at.at(j);
-    if (on_frame(c, c, r, W, H)) beads.beads.push_back(BeadInstance{f(c.x), f(c.y), f(r), kBead});
+    if (on_frame(c, c, r, W, H)) beads.beads.push_back(BeadInstance{f(c.x), f(c.y), f(r), frame.pal.bead});
   }
 }
 
@@ -123,11 +123,11 @@ void draw_broken_halves(Frame& frame, const PanelLayout& p, const Placer& at) {
     const float coils = 0.5f * p.coils;  // half a spring has half the turns
     if (on_frame(a, a1, p.spring_width, W, H)) {
       chain.springs.push_back(
-          SpringInstance{f(a.x), f(a.y), f(a1.x), f(a1.y), p.spring_width, coils, kBrokenHalf});
+          SpringInstance{f(a.x), f(a.y), f(a1.x), f(a1.y), p.spring_width, coils, frame.pal.broken_half});
     }
     if (on_frame(b, b1, p.spring_width, W, H)) {
       chain.springs.push_back(
-          SpringInstance{f(b.x), f(b.y), f(b1.x), f(b1.y), p.spring_width, coils, kBrokenHalf});
+          SpringInstance{f(b.x), f(b.y), f(b1.x), f(b1.y), p.spring_width, coils, frame.pal.broken_half});
     }
   }
 }
@@ -167,10 +167,10 @@ struct Columns {
 // reduced in registers and merged into the column once: updating the column in memory for
 // each would chain every iteration to the previous one's store.
 template <bool kTransverse>
-void fold_springs(const Frame& frame, const PanelLayout& p, Columns& cols) {
+void fold_springs(const Frame& frame, const PanelLayout& p, double origin, Columns& cols) {
   const int n = frame.params.beads, width = frame.style.width;
   const double* psi = frame.state.psi.data();
-  const double x_wall = frame.layout.x_wall, spacing = p.spacing;
+  const double x_wall = origin, spacing = p.spacing;
   const double centre = p.centre_y, psi_scale = p.psi_scale;
   const std::vector<int>& broken = frame.state.broken;
   std::size_t next = 0;
@@ -235,7 +235,7 @@ void fold_springs(const Frame& frame, const PanelLayout& p, Columns& cols) {
 // Folds every intact spring into the pixel columns it covers, keeping the most strained
 // one per column; emits one Rect per run of columns with equal colour (and, in the
 // transverse view, equal vertical extent).
-void draw_ribbon(Frame& frame, const PanelLayout& p) {
+void draw_ribbon(Frame& frame, const PanelLayout& p, double origin) {
   const int W = frame.style.width;
   const bool transverse = p.view == View::Transverse;
   const std::size_t w = static_cast<std::size_t>(W);
@@ -245,9 +245,9 @@ void draw_ribbon(Frame& frame, const PanelLayout& p) {
   if (transverse) {
     cols.y_lo.assign(w, std::numeric_limits<double>::infinity());
     cols.y_hi.assign(w, -std::numeric_limits<double>::infinity());
-    fold_springs<true>(frame, p, cols);
+    fold_springs<true>(frame, p, origin, cols);
   } else {
-    fold_springs<false>(frame, p, cols);
+    fold_springs<false>(frame, p, origin, cols);
   }
 
   Layer& chain = frame.layer(kLayerChain);
@@ -262,7 +262,7 @@ void draw_ribbon(Frame& frame, const PanelLayout& p) {
       cell.w = 1.0f;
       cell.y = f(transverse ? cols.y_lo[c] - half : p.centre_y - half);
       cell.h = f(transverse ? cols.y_hi[c] - cols.y_lo[c] + 2.0 * half : 2.0 * half);
-      cell.color = strain_color(cols.best_phi[c] / frame.strain_scale);
+      cell.color = strain_color(cols.best_phi[c] / frame.strain_scale, frame.style.theme);
     }
     const bool extends = open && filled && cell.y == run.y && cell.h == run.h &&
                          cell.color.r == run.color.r && cell.color.g == run.color.g &&
@@ -314,7 +314,7 @@ void draw_breaks(Frame& frame, const PanelLayout& p, const Placer& at) {
       c = {0.5 * (a.x + e.x), 0.5 * (a.y + e.y)};
     }
     const double t = age / kFlashTime, fade = 1.0 - t;
-    Color glow = kFlash, ray = kFlash;
+    Color glow = frame.pal.flash, ray = frame.pal.flash;
     glow.a = f(0.55 * fade * fade);
     ray.a = f(fade);
     const double glow_r = flash_r * (1.0 + 0.5 * t);
@@ -360,7 +360,7 @@ void draw_breaks(Frame& frame, const PanelLayout& p, const Placer& at) {
     const Point a = anchor_of(b);
     const double tip = a.y + clear, base = tip + tri_h;
     marks.triangles.push_back(
-        Triangle{{f(a.x), f(a.x - tri_w), f(a.x + tri_w)}, {f(tip), f(base), f(base)}, kMarker});
+        Triangle{{f(a.x), f(a.x - tri_w), f(a.x + tri_w)}, {f(tip), f(base), f(base)}, frame.pal.marker});
   }
   if (l.panel_count == 2 && p.view == View::Transverse) return;
 
@@ -383,27 +383,29 @@ void draw_breaks(Frame& frame, const PanelLayout& p, const Placer& at) {
     const double row_y = p.markers_top + k * row_h;
     if (row_y + 0.5 * ts > base) {  // a leader line down to the label's row
       marks.segments.push_back(
-          Segment{f(a.x), f(base), f(a.x), f(row_y + 0.5 * ts), 1.0f, kMarker});
+          Segment{f(a.x), f(base), f(a.x), f(row_y + 0.5 * ts), 1.0f, frame.pal.marker});
     }
     std::string text = break_text(b);
     if (k == shown - 1 && shown == rows && count > shown) {
       text += format_count(" (+%d more)", count - shown);
     }
-    const double w = text_width(text, f(ts));
+    const double w = text_width(text, l.font_px);
     double x = a.x + 0.5 * ts;
     if (x + w > W - l.margin) x = a.x - 0.5 * ts - w;  // near the right edge: to the left
     marks.labels.push_back(
-        Label{text, f(std::max(static_cast<double>(l.margin), x)), f(row_y), f(ts), kText});
+        Label{text, f(std::max(static_cast<double>(l.margin), x)), f(row_y), l.font_px, frame.pal.text});
   }
   if (count > shown && shown < rows) {
     const std::string more = format_count("+%d more breaks", count - shown);
     marks.labels.push_back(
-        Label{more, f(l.x_wall + 0.5 * ts), f(p.markers_top + shown * row_h), f(ts), kDimText});
+        Label{more, f(l.x_wall + 0.5 * ts), f(p.markers_top + shown * row_h), l.font_px, frame.pal.dim_text});
   }
 }
 
 // The pull: an arrow at bead N whose length is f / force_range of the longest arrow, after
 // the pull string when there is one. Gone once the string broke (nothing pulls any more).
+// It points the way the force acts on psi_N: along the chain in the longitudinal view,
+// across it (up for f > 0, as psi is drawn) in the transverse view.
 void draw_force(Frame& frame, const PanelLayout& p, const Placer& at) {
   if (!frame.string_intact) {
     frame.out.arrow_length = 0.0;
@@ -412,53 +414,72 @@ void draw_force(Frame& frame, const PanelLayout& p, const Placer& at) {
   Layer& layer = frame.layer(kLayerForce);
   const SnapshotLayout& l = frame.layout;
   const double ts = l.text_size;
+  const bool across = p.view == View::Transverse;
+  const double ux = across ? 0.0 : 1.0, uy = across ? -1.0 : 0.0;  // +psi on screen
   const Point n = at.at(frame.params.beads);
-  double start = n.x + p.bead_radius;
+  const auto along = [&](double d) { return Point{n.x + ux * d, n.y + uy * d}; };
+  double start = p.bead_radius;
   if (frame.params.pull_string) {
-    layer.segments.push_back(Segment{f(start), f(n.y), f(start + l.string_length), f(n.y),
-                                     f(std::max(1.0, ts / 10.0)), kForce});
+    const Point a = along(start), b = along(start + l.string_length);
+    layer.segments.push_back(
+        Segment{f(a.x), f(a.y), f(b.x), f(b.y), f(std::max(1.0, ts / 10.0)), frame.pal.force});
     start += l.string_length;
   } else {
     start += 0.25 * ts;
   }
   const double ratio = std::clamp(frame.force / frame.style.force_range, -1.0, 1.0);
-  const double length = l.arrow_max * (std::isnan(ratio) ? 0.0 : ratio);
+  // Across the chain the arrow keeps inside its panel: at most the panel's half height.
+  const double longest = across ? std::min<double>(l.arrow_max, 0.9 * p.half_height) : l.arrow_max;
+  const double length = longest * (std::isnan(ratio) ? 0.0 : ratio);
   frame.out.arrow_length = length;
   const double head = std::min(std::abs(length), std::clamp(1.2 * ts, 8.0, 28.0));
   const double hw = 0.45 * std::clamp(1.2 * ts, 8.0, 28.0);
   if (std::abs(length) >= 0.5) {
-    // Tail to tip spans [start, start + |length|] either way; the head is at the tip.
+    // Tail to tip spans [start, start + |length|] from the bead either way; the head is at
+    // the tip. Distances are along u; the head's corners are hw to either side of it.
     const double dir = length > 0 ? 1.0 : -1.0;
     const double tail = length > 0 ? start : start + std::abs(length);
     const double tip = tail + length;
     const double neck = tip - dir * head;
+    const Point t0 = along(tail), t1 = along(neck), t2 = along(tip);
     if (std::abs(neck - tail) > 0.0) {
-      layer.segments.push_back(
-          Segment{f(tail), f(n.y), f(neck), f(n.y), f(std::clamp(0.25 * ts, 2.0, 6.0)), kForce});
+      layer.segments.push_back(Segment{f(t0.x), f(t0.y), f(t1.x), f(t1.y),
+                                       f(std::clamp(0.25 * ts, 2.0, 6.0)), frame.pal.force});
     }
-    layer.triangles.push_back(
-        Triangle{{f(tip), f(neck), f(neck)}, {f(n.y), f(n.y - hw), f(n.y + hw)}, kForce});
+    const double vx = -uy * hw, vy = ux * hw;
+    layer.triangles.push_back(Triangle{{f(t2.x), f(t1.x + vx), f(t1.x - vx)},
+                                       {f(t2.y), f(t1.y + vy), f(t1.y - vy)},
+                                       frame.pal.force});
   }
   char text[48];
   std::snprintf(text, sizeof text, "f = %.2f", frame.force);
-  layer.labels.push_back(Label{text, f(start),
-                               f(n.y - std::max(static_cast<double>(p.bead_radius), hw) - 1.6 * ts),
-                               f(ts), kText});
+  std::string label = text;
+  if (const auto m = label.find('-'); m != std::string::npos) label.replace(m, 1, "\u2212");
+  const double clear = std::max(static_cast<double>(p.bead_radius), hw);
+  const Point where = across ? Point{n.x + clear + 0.5 * ts, n.y - 0.5 * ts}
+                             : Point{n.x + start, n.y - clear - 1.6 * ts};
+  layer.labels.push_back(Label{label, f(where.x), f(where.y), l.font_px, frame.pal.text});
 }
 
 }  // namespace
 
 void draw_chain_panel(Frame& frame, const PanelLayout& p) {
-  const Placer at{frame.state.psi, frame.layout.x_wall, p.spacing,
-                  p.psi_scale,     p.centre_y,          p.view == View::Transverse};
+  // Where bead 0 at rest would be: the wall's face, or left of it by the beads a zoom skips
+  // (longitudinal: and by the first drawn bead's displacement, so the stretch stays in view).
+  const SnapshotLayout& l = frame.layout;
+  const bool transverse = p.view == View::Transverse;
+  const int first = l.first_bead;
+  const double shift = first > 0 && !transverse ? frame.state.psi[first - 1] : 0.0;
+  const double origin = l.x_wall - (first + shift) * p.spacing;
+  const Placer at{frame.state.psi, origin, p.spacing, p.psi_scale, p.centre_y, transverse};
   if (frame.out.ribbon) {
-    draw_ribbon(frame, p);
+    draw_ribbon(frame, p, origin);
   } else {
     draw_beads_and_springs(frame, p, at);
     draw_broken_halves(frame, p, at);
   }
   draw_breaks(frame, p, at);
-  draw_force(frame, p, at);
+  if (l.last_bead == frame.params.beads) draw_force(frame, p, at);
 }
 
 }  // namespace cb::snapshot_detail

@@ -82,9 +82,10 @@ double smoothstep(double t) {
   return t * t * (3.0 - 2.0 * t);
 }
 
-Color design_color(double s) {
+// The theme sets the lightness range (dark: L* 30..92, light: 26..86, theme/theme.h).
+Color design_color(double s, double l_min, double l_max) {
   const double u = std::abs(s);
-  const double L = 61.0 + 31.0 * s;  // 30 at s = -1, 92 at s = +1
+  const double L = 0.5 * (l_min + l_max) + 0.5 * (l_max - l_min) * s;
   double hue, chroma;
   if (s < 0) {
     hue = 285.0 + 17.0 * u;  // blue-violet -> deep blue
@@ -102,16 +103,21 @@ Color design_color(double s) {
 
 using Lut = std::array<Color, kLutSize>;
 
-Lut build_lut() {
+Lut build_lut(const Theme& theme) {
   Lut lut;
-  for (int i = 0; i < kLutSize; ++i) lut[i] = design_color(-1.0 + 2.0 * i / (kLutSize - 1));
+  for (int i = 0; i < kLutSize; ++i)
+    lut[i] = design_color(-1.0 + 2.0 * i / (kLutSize - 1), theme.strain_l_min, theme.strain_l_max);
   return lut;
 }
 
 }  // namespace
 
-Color strain_color(double s) {
-  static const Lut lut = build_lut();
+Color strain_color(double s) { return strain_color(s, ThemeName::Dark); }
+
+Color strain_color(double s, ThemeName theme_name) {
+  static const Lut dark = build_lut(theme(ThemeName::Dark));
+  static const Lut light = build_lut(theme(ThemeName::Light));
+  const Lut& lut = theme_name == ThemeName::Light ? light : dark;
   if (std::isnan(s)) s = 0.0;  // a non-finite state shows as unstrained rather than garbage
   const double t = (std::clamp(s, -1.0, 1.0) + 1.0) * 0.5 * (kLutSize - 1);
   const int i = std::min(static_cast<int>(t), kLutSize - 2);

@@ -3,8 +3,8 @@
 //
 // Design note: every position comes from snapshot_layout(style, params), which depends on
 // nothing that changes during a run, so a video's frames share one layout and nothing jumps.
-// Sizes scale with the frame: the text is a whole multiple of the font's 7 px cap height
-// (crisp glyphs), margins and the wall follow the frame's size, and the chain takes the rest.
+// Sizes scale with the frame: the text is frame_text_px (2% of the height, at least 14 px) as
+// in the overlay, margins and the wall follow the frame's size, and the chain takes the rest.
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -13,6 +13,7 @@
 #include <limits>
 
 #include "snapshot/snapshot_internal.h"
+#include "text/font.h"
 
 namespace cb {
 
@@ -51,6 +52,14 @@ constexpr double kRibbonSpacing = 3.0;  // below this many pixels per bead: the 
 // `two_panels`: the first text row holds the panel's caption, so the chain keeps off it.
 PanelLayout panel_layout(View view, double top, double bottom, bool two_panels,
                          const SnapshotLayout& l, const SnapshotStyle& style, int beads) {
+  // A zoomed panel spans its stretch of springs; a longitudinal one moves with the stretch's
+  // first bead, so it needs room for the stretch's own extension only.
+  const double full_range = style.psi_range;
+  double psi_range = full_range;
+  if (l.zoomed()) {
+    beads = l.last_bead - l.first_bead;
+    psi_range = std::min(full_range, beads * std::max(style.threshold, style.strain_range));
+  }
   PanelLayout p;
   p.view = view;
   p.top = static_cast<float>(top);
@@ -61,7 +70,7 @@ PanelLayout panel_layout(View view, double top, double bottom, bool two_panels,
   const double usable = l.x_right - l.x_wall;
   // Longitudinal: bead N lands on x_right when psi_N = psi_range, the largest extension.
   const double spacing =
-      view == View::Longitudinal ? usable / (beads + style.psi_range) : usable / beads;
+      view == View::Longitudinal ? usable / (beads + psi_range) : usable / beads;
   // A chain that stretches a lot would get tiny beads at rest; size them for the geometric
   // mean of the rest and the fully stretched spacing (still below half the rest spacing).
   const double typical = std::min(std::sqrt(spacing * usable / beads), 1.6 * spacing);
@@ -101,11 +110,11 @@ PanelLayout panel_layout(View view, double top, double bottom, bool two_panels,
   return p;
 }
 
-void add_wall(Layer& layer, const SnapshotLayout& l, const PanelLayout& p) {
+void add_wall(Layer& layer, const SnapshotLayout& l, const PanelLayout& p, const Palette& pal) {
   const double x0 = l.margin, x1 = l.x_wall;
   const double y0 = p.centre_y - p.wall_half_height, y1 = p.centre_y + p.wall_half_height;
   layer.rects.push_back(Rect{static_cast<float>(x0), static_cast<float>(y0),
-                             static_cast<float>(x1 - x0), static_cast<float>(y1 - y0), kWall});
+                             static_cast<float>(x1 - x0), static_cast<float>(y1 - y0), pal.wall});
   // Hatching at 45 degrees: the lines x + y = k, clipped to the wall's rectangle.
   const double step = std::max(5.0, std::round(0.5 * l.text_size));
   const float width = static_cast<float>(std::max(1.0, l.text_size / 10.0));
@@ -114,10 +123,10 @@ void add_wall(Layer& layer, const SnapshotLayout& l, const PanelLayout& p) {
     if (hi - lo < 0.5) continue;
     layer.segments.push_back(Segment{static_cast<float>(lo), static_cast<float>(k - lo),
                                      static_cast<float>(hi), static_cast<float>(k - hi), width,
-                                     kHatch});
+                                     pal.hatch});
   }
   layer.segments.push_back(
-      Segment{l.x_wall, static_cast<float>(y0), l.x_wall, static_cast<float>(y1), 2.0f, kWallFace});
+      Segment{l.x_wall, static_cast<float>(y0), l.x_wall, static_cast<float>(y1), 2.0f, pal.wall_face});
 }
 
 std::string format(const char* fmt, double value) {
@@ -126,36 +135,59 @@ std::string format(const char* fmt, double value) {
   return buffer;
 }
 
+// A leading hyphen as the typographic minus sign (U+2212), as in the overlay and figures.
+std::string minus(std::string text) {
+  if (!text.empty() && text[0] == '-') text.replace(0, 1, "\u2212");
+  return text;
+}
+
 // The colour bar: strain_color over s in [-1, 1], ticks at -1, 0, +1 with their values, and
 // which side is compression and which tension.
-void add_legend(Layer& layer, const SnapshotLayout& l, const SnapshotStyle& style) {
+void add_legend(Layer& layer, const SnapshotLayout& l, const SnapshotStyle& style,
+                const Palette& pal) {
   const float ts = l.text_size;
   const int cells = std::max(1, std::min(256, static_cast<int>(l.legend_w)));
   const float cell_w = l.legend_w / static_cast<float>(cells);
   for (int i = 0; i < cells; ++i) {
     const double s = -1.0 + 2.0 * (i + 0.5) / cells;
     layer.rects.push_back(Rect{l.legend_x + cell_w * static_cast<float>(i), l.legend_y, cell_w,
-                               l.legend_h, strain_color(s)});
+                               l.legend_h, strain_color(s, style.theme)});
   }
   const bool phi_c = style.threshold > 0;
   const double scale = phi_c ? style.threshold : style.strain_range;
-  const std::string ticks[3] = {(phi_c ? "-phi_c = " : "phi = ") + format("%.3g", -scale), "0",
-                                (phi_c ? "+phi_c = " : "phi = +") + format("%.3g", scale)};
+  const std::string ticks[3] = {(phi_c ? "−φ_c = " : "φ = ") + minus(format("%.3g", -scale)),
+                                "0", (phi_c ? "+φ_c = " : "φ = +") + format("%.3g", scale)};
   const float tick_y = l.legend_y + l.legend_h;
   const float label_y = tick_y + 0.6f * ts;
   for (int t = 0; t < 3; ++t) {
     const float x = l.legend_x + 0.5f * l.legend_w * static_cast<float>(t);
-    layer.segments.push_back(Segment{x, tick_y, x, tick_y + 0.4f * ts, 1.0f, kDimText});
+    layer.segments.push_back(Segment{x, tick_y, x, tick_y + 0.4f * ts, 1.0f, pal.dim_text});
     // Left-aligned, centred, right-aligned: the end labels never leave the bar's span.
-    const float w = text_width(ticks[t], ts);
+    const float w = text_width(ticks[t], l.font_px);
     const float label_x = x - 0.5f * w * static_cast<float>(t);
-    layer.labels.push_back(Label{ticks[t], label_x, label_y, ts, kDimText});
+    layer.labels.push_back(Label{ticks[t], label_x, label_y, l.font_px, pal.dim_text});
   }
   const float mid_y = l.legend_y + 0.5f * (l.legend_h - ts);
   const std::string left = "compression", right = "tension";
   layer.labels.push_back(
-      Label{left, l.legend_x - 0.6f * ts - text_width(left, ts), mid_y, ts, kText});
-  layer.labels.push_back(Label{right, l.legend_x + l.legend_w + 0.6f * ts, mid_y, ts, kText});
+      Label{left, l.legend_x - 0.6f * ts - text_width(left, l.font_px), mid_y, l.font_px, pal.text});
+  layer.labels.push_back(Label{right, l.legend_x + l.legend_w + 0.6f * ts, mid_y, l.font_px, pal.text});
+}
+
+// Zoom: a thin bar standing for the whole chain (wall at its left), the drawn stretch marked
+// on it in the accent colour, and which springs those are.
+void add_overview(Layer& layer, const SnapshotLayout& l, int beads, const Palette& pal) {
+  layer.rects.push_back(Rect{l.overview_x, l.overview_y, l.overview_w, l.overview_h, pal.rest_line});
+  const float x0 = l.overview_x + l.overview_w * static_cast<float>(l.first_bead) / beads;
+  const float x1 = l.overview_x + l.overview_w * static_cast<float>(l.last_bead) / beads;
+  const float w = std::max(2.0f, x1 - x0);
+  layer.rects.push_back(Rect{std::min(x0, l.overview_x + l.overview_w - w), l.overview_y - 1.0f, w,
+                             l.overview_h + 2.0f, pal.marker});
+  char text[96];
+  std::snprintf(text, sizeof text, "springs %d\u2013%d of %d", l.first_bead + 1, l.last_bead, beads);
+  const float tw = text_width(text, l.font_px);
+  layer.labels.push_back(Label{text, std::round(0.5f * (l.overview_x + l.overview_w - tw + l.overview_x)),
+                               l.margin, l.font_px, pal.dim_text});
 }
 
 }  // namespace
@@ -166,12 +198,22 @@ SnapshotLayout snapshot_layout(const SnapshotStyle& style, const ChainParams& pa
   assert(style.psi_range > 0 && "psi_range sets the scale and must be positive");
   const double W = style.width, frame_h = style.height;
   SnapshotLayout l;
-  const double ts = 7.0 * std::max(1.0, std::round(frame_h / 360.0));
+  // One text size for the whole frame (theme/fonts.h); the layout's unit is its cap height.
+  const double font_px = frame_text_px(style.height);
+  const double ts = std::round(Font::get(FontFace::Sans).cap_height(static_cast<float>(font_px)));
   const double margin = std::max(6.0, std::round(0.025 * std::min(W, frame_h)));
   // Below the chain's band the overlay draws: the legend and the panels stay above it.
   const double H =
       style.chain_height > 0 ? std::min(frame_h, static_cast<double>(style.chain_height)) : frame_h;
   l.text_size = static_cast<float>(ts);
+  l.font_px = static_cast<float>(font_px);
+  l.first_bead = 0;
+  l.last_bead = params.beads;
+  if (style.zoom_first > 0 && style.zoom_last > style.zoom_first) {
+    l.first_bead = std::min(style.zoom_first - 1, params.beads - 1);
+    l.last_bead = std::clamp(style.zoom_last, l.first_bead + 1, params.beads);
+    l.last_bead_limited = l.last_bead < params.beads;
+  }
   l.margin = static_cast<float>(margin);
   l.x_wall = static_cast<float>(margin + std::max(10.0, std::round(0.02 * W)));
   l.arrow_max = static_cast<float>(std::clamp(std::round(0.08 * W), 30.0, 160.0));
@@ -187,7 +229,17 @@ SnapshotLayout snapshot_layout(const SnapshotStyle& style, const ChainParams& pa
   l.legend_x = static_cast<float>(std::round(0.5 * (W - l.legend_w)));
 
   const double top = margin + 2.2 * ts;  // below the time label
-  const double bottom = std::max(top + 1.0, l.legend_y - 1.4 * ts);
+  if (l.zoomed()) {  // the overview bar: the whole chain, under the time label's row
+    l.overview_x = l.x_wall;
+    l.overview_w = l.x_right - l.x_wall;
+    l.overview_h = static_cast<float>(std::max(3.0, std::round(0.35 * ts)));
+    l.overview_y = static_cast<float>(std::round(margin + 1.55 * ts));
+  }
+  double bottom = std::max(top + 1.0, l.legend_y - 1.4 * ts);
+  if (!style.caption.empty()) {  // a row for the caption between the chain and the colour bar
+    l.caption_y = static_cast<float>(std::round(l.legend_y - 2.6 * ts));
+    bottom = std::max(top + 1.0, l.caption_y - 1.2 * ts);
+  }
   if (style.view == View::Both) {
     const double gap = ts;
     const double h = std::max(1.0, 0.5 * (bottom - top - gap));
@@ -204,6 +256,31 @@ SnapshotLayout snapshot_layout(const SnapshotStyle& style, const ChainParams& pa
 
 namespace snapshot_detail {
 
+Color to_color(Rgb8 c, float alpha) { return Color{c.r / 255.0f, c.g / 255.0f, c.b / 255.0f, alpha}; }
+
+Palette palette(ThemeName name) {
+  const Theme& t = theme(name);
+  const auto mix = [](Rgb8 a, Rgb8 b, float w) {
+    return Color{(a.r + (b.r - a.r) * w) / 255.0f, (a.g + (b.g - a.g) * w) / 255.0f,
+                 (a.b + (b.b - a.b) * w) / 255.0f, 1.0f};
+  };
+  Palette p;
+  p.background = to_color(t.background);
+  p.text = to_color(t.text);
+  p.dim_text = to_color(t.text_dim);
+  p.wall = mix(t.background, t.wall, 0.35f);
+  p.hatch = to_color(t.wall);
+  p.wall_face = mix(t.wall, t.text, 0.5f);
+  p.bead = to_color(t.bead);
+  p.broken_half = Color{0.5f, 0.5f, 0.5f, 1.0f};  // neutral: carries no strain
+  p.rest_line = to_color(t.rest_line);
+  p.force = to_color(t.force);
+  p.marker = to_color(t.marker);
+  // The flash: a warm white glow on the dark theme; on white paper the marker's amber.
+  p.flash = name == ThemeName::Light ? to_color(t.marker) : Color{1.0f, 0.94f, 0.78f, 1.0f};
+  return p;
+}
+
 double Frame::break_age(int spring) const {
   // The latest recorded break of this spring (there is normally exactly one).
   const auto it = std::upper_bound(breaks_by_spring.begin(), breaks_by_spring.end(), spring,
@@ -216,6 +293,20 @@ double Frame::break_age(int spring) const {
 
 }  // namespace snapshot_detail
 
+void add_slow_motion_tag(RenderSnapshot& snap, double speed, ThemeName theme) {
+  const SnapshotLayout& l = snap.layout;
+  const Palette pal = palette(theme);
+  char factor[32];
+  std::snprintf(factor, sizeof factor, "%.2g", speed);
+  const std::string text = "\u00D7" + std::string(factor) + " slow motion";
+  const float w = text_width(text, l.font_px);
+  const float x = static_cast<float>(snap.width) - l.margin - w;
+  Layer& marks = snap.layers[kLayerMarks];
+  marks.labels.push_back(Label{text, x, l.margin, l.font_px, pal.text});
+  const float y = l.margin + 1.5f * l.text_size;
+  marks.rects.push_back(Rect{x, y, w, std::max(2.0f, 0.2f * l.text_size), to_color(cb::theme(theme).accent)});
+}
+
 RenderSnapshot build_snapshot(const ChainState& state, const ChainParams& params, double force,
                               const SnapshotStyle& style) {
   assert(state.psi.size() == static_cast<std::size_t>(params.beads) && "state does not match N");
@@ -224,7 +315,8 @@ RenderSnapshot build_snapshot(const ChainState& state, const ChainParams& params
   RenderSnapshot out;
   out.width = style.width;
   out.height = style.height;
-  out.background = kBackground;
+  const Palette pal = palette(style.theme);
+  out.background = pal.background;
   out.tau = state.tau;
   out.force = force;
   out.beads = params.beads;
@@ -235,7 +327,7 @@ RenderSnapshot build_snapshot(const ChainState& state, const ChainParams& params
     if (b.tau <= state.tau) out.breaks_shown.push_back(b);
   }
 
-  Frame frame{state, params, style, out.layout, force, 1.0, true, out.breaks_shown, out};
+  Frame frame{state, params, style, out.layout, pal, force, 1.0, true, out.breaks_shown, out};
   frame.strain_scale = style.threshold > 0 ? style.threshold : style.strain_range;
   std::stable_sort(frame.breaks_by_spring.begin(), frame.breaks_by_spring.end(),
                    [](const BreakEvent& a, const BreakEvent& b) { return a.spring < b.spring; });
@@ -246,21 +338,27 @@ RenderSnapshot build_snapshot(const ChainState& state, const ChainParams& params
   Layer& back = frame.layer(kLayerFrame);
   for (int i = 0; i < l.panel_count; ++i) {
     const PanelLayout& p = l.panels[i];
-    add_wall(back, l, p);
+    if (l.first_bead == 0) add_wall(back, l, p, pal);
     if (p.view == View::Transverse) {  // the rest line psi = 0, a reference for the eye
       back.segments.push_back(
-          Segment{l.x_wall, p.centre_y, l.x_right, p.centre_y, 1.0f, kRestLine});
+          Segment{l.x_wall, p.centre_y, l.x_right, p.centre_y, 1.0f, pal.rest_line});
     }
     if (l.panel_count > 1) {
-      const std::string caption = p.view == View::Longitudinal ? "longitudinal: x = j + psi_j"
-                                                               : "transverse: psi_j drawn across";
-      back.labels.push_back(Label{caption, l.margin, p.top, l.text_size, kDimText});
+      const std::string caption = p.view == View::Longitudinal ? "longitudinal: x = j + ψ_j"
+                                                               : "transverse: ψ_j drawn across";
+      back.labels.push_back(Label{caption, l.margin, p.top, l.font_px, pal.dim_text});
     }
   }
-  add_legend(back, l, style);
+  add_legend(back, l, style, pal);
+  if (l.zoomed()) add_overview(back, l, params.beads, pal);
+  if (!style.caption.empty()) {
+    const float w = text_width(style.caption, l.font_px);
+    back.labels.push_back(Label{style.caption, std::round(0.5f * (style.width - w)), l.caption_y,
+                                l.font_px, pal.text});
+  }
   frame.layer(kLayerMarks)
       .labels.push_back(
-          Label{format("tau = %.2f", state.tau), l.margin, l.margin, l.text_size, kText});
+          Label{minus(format("τ = %.2f", state.tau)), l.margin, l.margin, l.font_px, pal.text});
 
   for (int i = 0; i < l.panel_count; ++i) draw_chain_panel(frame, l.panels[i]);
   return out;

@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "physics/chain.h"
+#include "text/text_layout.h"
+#include "theme/theme.h"
 
 namespace cb {
 
@@ -52,18 +54,15 @@ struct Rect {  // filled axis-aligned rectangle (wall, colour bar cells, flash, 
   Color color;
 };
 
-// Labels are drawn with a small built-in ASCII font: `text` with every byte outside
-// printable ASCII (32..126, and newline) replaced by '?' (UTF-8 "tau" would otherwise index
-// the font's glyph table out of bounds).
-std::string printable_ascii(const std::string& text);
-// Width in pixels of `text` at cap height `size`, exactly as the renderer draws it.
-float text_width(const std::string& text, float size);
-
+// A line of text in the project's typeface (UTF-8 with real glyphs: τ, φ, ψ; "_c" and "_{N/2}"
+// are subscripts), laid out by text/text_layout.h: text_width(text, size, face) is exactly
+// the width the renderer draws.
 struct Label {
   std::string text;
-  float x = 0, y = 0;  // top-left of the text, pixels
-  float size = 12;     // cap height in pixels
+  float x = 0, y = 0;  // left edge and the top of its capitals, pixels
+  float size = 14;     // pixel height of the font (ascent - descent), as Dear ImGui's
   Color color;
+  FontFace face = FontFace::Sans;
 };
 
 // One drawing layer; layers are drawn in order (back to front), each shape kind in one
@@ -107,7 +106,8 @@ struct PanelLayout {
 // Where everything goes, from the style and N alone: the same for every frame of a video.
 struct SnapshotLayout {
   float margin = 0;
-  float text_size = 0;      // cap height of labels (a whole multiple of the font's 7 px)
+  float font_px = 0;        // labels' pixel height: frame_text_px(frame height), as the overlay's
+  float text_size = 0;      // the layout's unit: the labels' cap height, pixels
   float x_wall = 0;         // the wall's face, x of bead 0
   float x_right = 0;        // bead N at psi_N = psi_range (longitudinal) or at rest (transverse)
   float arrow_max = 0;      // length of the force arrow at |f| = force_range
@@ -116,6 +116,13 @@ struct SnapshotLayout {
   int panel_count = 0;
   PanelLayout panels[2];
   float legend_x = 0, legend_y = 0, legend_w = 0, legend_h = 0;  // the colour bar
+  // The beads the panels span: first_bead at the wall's face (0: the wall itself), last_bead
+  // at the right end (N unless zoomed).
+  int first_bead = 0, last_bead = 0;
+  bool zoomed() const { return first_bead > 0 || last_bead_limited; }
+  bool last_bead_limited = false;
+  float overview_x = 0, overview_y = 0, overview_w = 0, overview_h = 0;  // zoom: the whole chain
+  float caption_y = 0;  // top of the caption's capitals (when there is one)
 };
 
 struct RenderSnapshot {
@@ -138,6 +145,7 @@ struct RenderSnapshot {
 // How a frame is laid out; the same for every frame of a video so nothing jumps.
 struct SnapshotStyle {
   int width = 1280, height = 720;
+  ThemeName theme = ThemeName::Dark;
   View view = View::Longitudinal;
   // The largest |psi| expected in the run (> 0): the longitudinal view fits bead N at
   // psi_N = psi_range, the transverse view maps |psi| = psi_range to the panel's half height.
@@ -150,16 +158,26 @@ struct SnapshotStyle {
   // frame, leaving the rest to the overlay's plots; 0 (or the frame's height): the whole frame.
   // Text size and margins still follow the whole frame, so they match the overlay's.
   int chain_height = 0;
+  // Zoom: springs zoom_first..zoom_last (1-based, first < last) drawn across the panel, with an
+  // overview bar of the whole chain marking where they sit; 0, 0: the whole chain. In the
+  // longitudinal view the window moves with bead zoom_first - 1, so the stretch stays in view.
+  int zoom_first = 0, zoom_last = 0;
+  std::string caption;  // a line of text centred under the chain (above the colour bar)
 };
 
 // The strain colour map: s = phi / phi_c in [-1, 1] (clamped). Diverging (compression blue,
 // tension orange) with lightness rising monotonically from s = -1 to s = +1, so compression
 // and tension differ in greyscale print and for colour-blind viewers; saturates visibly
 // (towards a hot, brighter tone) as |s| approaches 1.
-Color strain_color(double s);
+Color strain_color(double s, ThemeName theme);
+Color strain_color(double s);  // the dark theme's
 
 // The layout build_snapshot uses for this style and chain.
 SnapshotLayout snapshot_layout(const SnapshotStyle& style, const ChainParams& params);
+
+// Marks a frame of a slowed-down video: "×0.1 slow motion" at the top right, in the theme's
+// text colour over an accent underline (speed: this frame's speed relative to normal).
+void add_slow_motion_tag(RenderSnapshot& snapshot, double speed, ThemeName theme);
 
 // Builds the frame for the chain in `state` (bead j's psi in state.psi[j-1]) under force f.
 RenderSnapshot build_snapshot(const ChainState& state, const ChainParams& params, double force,

@@ -1,5 +1,7 @@
 #include "theme/fonts.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
@@ -26,6 +28,14 @@ std::string font_path(FontFace face) {
 
 const char* font_family(FontFace face) {
   return face == FontFace::Mono ? "DejaVu Sans Mono" : "DejaVu Sans";
+}
+
+}  // namespace cb
+
+namespace cb {
+
+float frame_text_px(int frame_height) {
+  return std::max(14.0f, std::round(0.02f * static_cast<float>(frame_height)));
 }
 
 }  // namespace cb

@@ -29,6 +29,7 @@ struct Theme {
   Rgb8 text;        // all text: >= 7:1 against background and panel
   Rgb8 text_dim;    // secondary text (captions, units): still >= 7:1
   Rgb8 axis;        // plot frames, ticks
+  Rgb8 border;      // outlines of the overlay's panels
   Rgb8 grid;        // grid lines, faint
   Rgb8 rest_line;   // the chain's rest line in the transverse view
   Rgb8 wall;        // the wall's face and hatching

@@ -68,7 +68,7 @@ bool chain_controls(ChainParams& c) {
 void status_lines(const ViewerModel& model, const Session& session) {
   const ChainState& s = session.state();
   ImGui::Text("tau %.2f / %.2f   frame %lld", session.tau(),
-              static_cast<double>(session.plan().frames - 1) * session.plan().tau_per_frame,
+              session.plan().grid.tau(session.plan().grid.frames() - 1),
               static_cast<long long>(session.frame()));
   if (!s.breaks.empty())
     ImGui::Text("first break: spring %d at tau %.3f", s.breaks.front().spring,

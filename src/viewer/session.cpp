@@ -1,5 +1,6 @@
 #include "viewer/session.h"
 
+#include "physics/run_loop.h"
 #include "snapshot/snapshot.h"
 
 namespace cb {
@@ -19,13 +20,13 @@ void Session::restart() {
   RenderPlan plan = plan_render(scene_, options_);
   measure_plan(scene_, plan);
   auto sim = std::make_unique<Integrator>(scene_.chain, make_forcing(scene_.drive),
-                                          IntegratorOptions{plan.dt, 1});
+                                          IntegratorOptions{plan.grid.dt(), 1});
   plan_ = std::move(plan);
   sim_ = std::move(sim);
   history_.reset();
   if (plan_.overlay_layout.enabled)
     history_ = std::make_unique<OverlayHistory>(scene_.chain, scene_.drive, plan_.overlay_setup);
-  phi_history_.reset(scene_.chain.beads, plan_.tau_per_frame);
+  phi_history_.reset(scene_.chain.beads, plan_.grid.tau_per_frame());
   frame_ = 0;
   error_.clear();
   record();
@@ -41,7 +42,8 @@ void Session::set_view(const std::string& view) {
 
 void Session::advance(std::int64_t count) {
   for (std::int64_t i = 0; i < count && !at_end() && error_.empty(); ++i) {
-    if (!sim_->advance_to((frame_ + 1) * plan_.substeps)) {
+    const StopRule next_frame{plan_.grid.step(frame_ + 1), std::nullopt, false, nullptr};
+    if (run_until(*sim_, next_frame) == RunEnd::Failed) {
       error_ = sim_->error();
       return;
     }

@@ -38,9 +38,9 @@ class Session {
   const SceneDesc& scene() const { return scene_; }
   const RenderPlan& plan() const { return plan_; }
   const ChainState& state() const { return sim_->state(); }
-  double tau() const { return static_cast<double>(frame_) * plan_.tau_per_frame; }
+  double tau() const { return plan_.grid.tau(frame_); }
   std::int64_t frame() const { return frame_; }
-  bool at_end() const { return frame_ >= plan_.frames - 1; }
+  bool at_end() const { return frame_ >= plan_.grid.frames() - 1; }
   // The physics stopped being finite: the message, and the run stays where it was.
   const std::string& error() const { return error_; }
 

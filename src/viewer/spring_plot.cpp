@@ -64,7 +64,7 @@ void SpringPlot::draw(const Session& session, int spring) {
   if (hi - lo < 1e-9f) hi = lo + 1.0f;
   // The time axis grows with the run (0 to now): the whole video's span would squeeze the
   // early part a lecturer is looking at into a sliver.
-  const double tau_end = std::max(h.tau(h.rows() - 1), session.plan().tau_per_frame);
+  const double tau_end = std::max(h.tau(h.rows() - 1), session.plan().grid.tau_per_frame());
   const ImGuiIO& io = ImGui::GetIO();
   ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - 470, 10), ImGuiCond_FirstUseEver);
   ImGui::Begin("Spring", nullptr, ImGuiWindowFlags_AlwaysAutoResize);

@@ -10,21 +10,30 @@
 #include <string>
 
 #include "overlay/overlay.h"
+#include "theme/fonts.h"
 
 namespace cb {
 
-UiContext::UiContext(GLFWwindow* window) {
+UiContext::UiContext(GLFWwindow* window, ThemeName theme) {
+  const std::string font = font_path(FontFace::Sans);  // before anything needs undoing
   context_ = ImGui::CreateContext();
   ImGui::SetCurrentContext(context_);
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;  // no imgui.ini left in the user's folder
-  ImGui::StyleColorsDark();
-  // The overlay's DejaVu Sans, larger than ImGui's built-in 13 px bitmap font: readable from
-  // the back of a lecture hall. Without the font file the built-in one does.
-  const char* dir = std::getenv("CHAINBREAK_FONT_DIR");
-  const std::string font =
-      (std::filesystem::path(dir && *dir ? dir : kOverlayFontDir) / "DejaVuSans.ttf").string();
-  if (std::filesystem::is_regular_file(font)) io.Fonts->AddFontFromFileTTF(font.c_str(), 17.0f);
+  if (theme == ThemeName::Light) {
+    ImGui::StyleColorsLight();
+  } else {
+    ImGui::StyleColorsDark();
+  }
+  // The project's one typeface, DejaVu Sans, at 17 px: readable from the back of a lecture
+  // hall. ImGui's built-in bitmap font is never used: a missing file is an error (font_path
+  // names the package). Latin, Greek and the math signs the controls write (τ, φ_c, γ, β).
+  static const ImWchar kRanges[] = {0x0020, 0x00FF, 0x0391, 0x03C9, 0x2070, 0x209C,
+                                    0x2190, 0x21FF, 0x2200, 0x22FF, 0};
+  if (!io.Fonts->AddFontFromFileTTF(font.c_str(), 17.0f, nullptr, kRanges)) {
+    this->~UiContext();
+    throw std::runtime_error("Dear ImGui could not load the font " + font);
+  }
   platform_ = ImGui_ImplGlfw_InitForOpenGL(window, true);
   renderer_ = platform_ && ImGui_ImplOpenGL3_Init("#version 330");
   if (!renderer_) {

@@ -5,6 +5,8 @@
 // the two never see each other's state.
 #pragma once
 
+#include "theme/theme.h"
+
 struct GLFWwindow;
 struct ImGuiContext;
 
@@ -12,7 +14,8 @@ namespace cb {
 
 class UiContext {
  public:
-  explicit UiContext(GLFWwindow* window);  // throws std::runtime_error if a backend fails
+  // Throws std::runtime_error if a backend fails or the font is missing.
+  UiContext(GLFWwindow* window, ThemeName theme);
   ~UiContext();
   UiContext(const UiContext&) = delete;
   UiContext& operator=(const UiContext&) = delete;

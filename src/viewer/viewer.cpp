@@ -15,7 +15,6 @@
 #include "output/output_file.h"
 #include "overlay/overlay.h"
 #include "render/renderer.h"
-#include "scene/scene_writer.h"
 #include "viewer/controls.h"
 #include "viewer/frame_placement.h"
 #include "viewer/frame_times.h"
@@ -57,31 +56,44 @@ struct Viewer {
         window(w),
         session(scene, o.render),
         draft(session.scene()),
-        ui(w.handle()),
+        ui(w.handle(), session.plan().style.theme),
         renderer(session.plan().frame.width, session.plan().frame.height),
         outputs(o.out_dir, scene.name) {
     const RenderPlan& p = session.plan();
     draft.render.view = p.frame.view;  // --view, when given, over the scene's
+    draft.render.theme = p.frame.theme;
     if (p.overlay_layout.enabled)
-      overlay = std::make_unique<Overlay>(p.frame.width, p.frame.height, p.frame.fps, p.overlay);
+      overlay = std::make_unique<Overlay>(p.frame.width, p.frame.height, p.frame.fps, p.overlay,
+                                          p.style.theme);
     if (!o.script.empty()) script.emplace(std::move(actions));
     fixed_step = script || o.benchmark_frames > 0;
     model.script = fixed_step;
     model.speed = session.scene().render.speed;
     model.playing = o.play || o.benchmark_frames > 0;
-    pacer.reset(Window::now(), 0, model.speed, p.tau_per_frame);
+    pacer.reset(Window::now(), 0, model.speed, p.grid.tau_per_frame());
   }
 
   // From tau = 0, with the draft's chain and drive when `apply_draft`: checked by the scene
-  // file's own rules first (N, gamma, phi_c, dt's stability limit...), with the same messages.
-  // On any failure the run and the controls stay as they were and the panel says why.
+  // file's own rules first (validate(): N, gamma, phi_c, dt's stability limit...), with the
+  // same messages. On any failure the run and the controls stay as they were and the panel
+  // says why.
   void restart(bool apply_draft) {
     try {
       SceneDesc next = session.scene();
       if (apply_draft) {
-        next = parse_scene(write_scene(draft), "the viewer's settings");
-        next.path = session.scene().path;
-        next.name = session.scene().name;
+        next.chain = draft.chain;
+        next.drive = draft.drive;
+        // The edit came from a control, not from the file: the message starts at the key.
+        next.origins.clear();
+        // chain.gamma defines units.friction = 2 m omega0 gamma, as the reader derives it.
+        if (next.units)
+          next.units->friction = next.chain.gamma * 2.0 * next.units->mass * next.units->omega0();
+        try {
+          validate(next);
+        } catch (const SceneError& e) {
+          throw SceneError(std::string("not applied: ") + e.what());
+        }
+        next.origins = session.scene().origins;
       }
       next.render.speed = model.speed;
       SceneDesc previous = std::exchange(session.scene(), std::move(next));
@@ -94,15 +106,7 @@ struct Viewer {
       }
       if (apply_draft) model.status.clear();  // an earlier rejected edit is no longer news
     } catch (const std::exception& e) {
-      // The draft is checked as a scene text nobody sees: drop its "name:line:col: " so the
-      // message starts at the key it names (e.g. "chain.threshold must be > 0 ...").
-      std::string why = e.what();
-      const std::string prefix = "the viewer's settings:";
-      if (why.rfind(prefix, 0) == 0) {
-        const auto text = why.find(": ", prefix.size());
-        if (text != std::string::npos) why = "not applied: " + why.substr(text + 2);
-      }
-      set_status(why, true);
+      set_status(e.what(), true);
       const std::string view = draft.render.view;  // the view is not part of a restart
       draft = session.scene();
       draft.render.view = view;
@@ -130,7 +134,7 @@ struct Viewer {
     }
     if (r.view_changed) session.set_view(draft.render.view);
     if (r.speed_changed)
-      pacer.reset(Window::now(), session.frame(), model.speed, session.plan().tau_per_frame);
+      pacer.reset(Window::now(), session.frame(), model.speed, session.plan().grid.tau_per_frame());
     if (r.step > 0) {
       model.playing = false;
       session.advance(r.step);
@@ -147,7 +151,7 @@ struct Viewer {
   void advance_physics() {
     const RenderPlan& p = session.plan();
     if (!model.playing || session.at_end()) {
-      pacer.reset(Window::now(), session.frame(), model.speed, p.tau_per_frame);
+      pacer.reset(Window::now(), session.frame(), model.speed, p.grid.tau_per_frame());
       model.behind = false;
       return;
     }
@@ -157,7 +161,7 @@ struct Viewer {
       // need not be a whole number of grid frames: the fraction is carried to the next
       // displayed frame, so the tau per frame is right on average (a slower speed moves the
       // chain every few displayed frames).
-      grid_carry += model.speed / p.frame.fps / p.tau_per_frame;
+      grid_carry += model.speed / p.frame.fps / p.grid.tau_per_frame();
       const auto frames = static_cast<std::int64_t>(std::floor(grid_carry + 1e-9));
       grid_carry -= static_cast<double>(frames);
       if (frames > 0) session.advance(frames);

@@ -24,12 +24,12 @@
 #include <vector>
 
 #include "bench_support.h"
+#include "text/text_layout.h"
 #include "gl/gl_context.h"
 #include "gl/gl_loader.h"
 #include "output/image.h"
 #include "output/png_writer.h"
 #include "render/renderer.h"
-#include "render/text.h"
 #include "snapshot/snapshot.h"
 
 namespace {
@@ -261,17 +261,18 @@ struct Anchor {
 // What llvmpipe pays for: its triangle setup runs on the calling thread at roughly half a
 // microsecond per triangle, so a frame costs about its primitive count. Counts the quads and
 // triangles the renderer submits: rects, segments, beads, arrow triangles, coil pieces (2
-// per turn plus 3, as renderer.cpp's append_spring draws them) and text rectangles.
+// per turn plus 3, as renderer.cpp's append_spring draws them) and glyph quads.
 std::size_t primitives(const cb::RenderSnapshot& snap) {
   std::size_t n = 0;
-  std::vector<cb::Rect> text;
+  std::size_t glyphs = 0;
   for (const auto& l : snap.layers) {
     n += l.rects.size() + l.segments.size() + l.triangles.size() + l.beads.size();
     for (const auto& s : l.springs)
       n += s.coils > 0.0f ? 2 * static_cast<std::size_t>(std::ceil(s.coils)) + 3 : 1;
-    for (const auto& label : l.labels) cb::label_rects(label, text);
+    for (const auto& label : l.labels)
+      glyphs += cb::layout_text(label.text, label.size, label.face).glyphs.size();
   }
-  return n + text.size();
+  return n + glyphs;
 }
 
 // Per-phase seconds summed over the iterations, reported as milliseconds per frame, plus

@@ -20,145 +20,25 @@
 // Before the benchmarks run, main() checks that the plain RK4 and the Integrator agree,
 // so the baseline is known to solve the same equations.
 #include <benchmark/benchmark.h>
+#include <xmmintrin.h>
 
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <functional>
+#include <string>
 #include <vector>
 
 #include "bench_support.h"
 #include "drive/drive.h"
 #include "physics/integrator.h"
+#include "physics/simd.h"
+#include "physics/worker_pool.h"
+#include "rk4_workload.h"
 
 namespace {
-
-// The common workload: Eq. (dimless) with friction, pulled by a ramp f = beta tau.
-constexpr double kDt = 0.01;
-constexpr double kGamma = 0.1;
-constexpr double kBeta = 0.01;
-
-double ramp(double tau) {
-  return kBeta * tau;
-}
-
-// Steps per benchmark iteration: ~1e6-1e7 bead-steps, so one iteration is long enough
-// to time and short enough that the whole binary runs in about a minute.
-int steps_per_iteration(std::int64_t beads) {
-  if (beads <= 100) return 32768;
-  if (beads <= 10000) return 1024;
-  if (beads <= 1000000) return 2;
-  return 1;
-}
-
-// Beads still at rest or in the subnormal band ahead of the wave front.
-std::int64_t beads_below_normal(const std::vector<double>& psi, const std::vector<double>& vel) {
-  std::int64_t count = 0;
-  for (std::size_t i = 0; i < psi.size(); ++i)
-    count += std::abs(psi[i]) < DBL_MIN || std::abs(vel[i]) < DBL_MIN;
-  return count;
-}
-
-std::int64_t beads_subnormal(const std::vector<double>& psi, const std::vector<double>& vel) {
-  std::int64_t count = 0;
-  for (std::size_t i = 0; i < psi.size(); ++i)
-    count += std::fpclassify(psi[i]) == FP_SUBNORMAL || std::fpclassify(vel[i]) == FP_SUBNORMAL;
-  return count;
-}
-
-// Warm-up of small chains (see the design note): advance until the wave front has left
-// the chain, in chunks of 1000 steps. At N = 1e3, dt = 0.01 this takes ~60000 steps.
-constexpr std::int64_t kWarmUpMaxBeads = 10000;
-
-template <class Sim>
-void warm_up(Sim& sim) {
-  if (static_cast<std::int64_t>(sim.psi().size()) > kWarmUpMaxBeads) return;
-  for (int chunk = 0; chunk < 1000 && beads_below_normal(sim.psi(), sim.vel()) > 0; ++chunk)
-    sim.advance(1000);
-}
-
-void set_counters(benchmark::State& state, std::int64_t beads, std::int64_t steps,
-                  std::int64_t bytes_per_bead_step) {
-  const std::int64_t bead_steps = beads * steps * static_cast<std::int64_t>(state.iterations());
-  state.counters["bead_steps"] =
-      benchmark::Counter(static_cast<double>(bead_steps), benchmark::Counter::kIsRate);
-  state.SetItemsProcessed(bead_steps);
-  state.SetBytesProcessed(bead_steps * bytes_per_bead_step);
-}
-
-// ---------------------------------------------------------------------------------------
-// The baseline: classical RK4 as a textbook writes it, with a k array per stage.
-// Same equations as the Integrator: psi_j'' = psi_{j-1} - 2 psi_j + psi_{j+1}
-// - 2 gamma psi_j' + f delta_jN, with psi_0 = 0 (wall) and psi_{N+1} = psi_N (free end).
-class PlainRk4 {
- public:
-  PlainRk4(int beads, double gamma, double dt)
-      : n_(beads),
-        gamma_(gamma),
-        dt_(dt),
-        x_(beads),
-        v_(beads),
-        k1x_(beads),
-        k1v_(beads),
-        k2x_(beads),
-        k2v_(beads),
-        k3x_(beads),
-        k3v_(beads),
-        k4x_(beads),
-        k4v_(beads),
-        xs_(beads),
-        vs_(beads) {}
-
-  void step() {
-    const double t = static_cast<double>(steps_) * dt_;
-    const double h = dt_, h2 = 0.5 * dt_, h6 = dt_ / 6.0;
-    derivatives(x_.data(), v_.data(), ramp(t), k1x_.data(), k1v_.data());
-    stage(h2, k1x_.data(), k1v_.data());
-    derivatives(xs_.data(), vs_.data(), ramp(t + h2), k2x_.data(), k2v_.data());
-    stage(h2, k2x_.data(), k2v_.data());
-    derivatives(xs_.data(), vs_.data(), ramp(t + h2), k3x_.data(), k3v_.data());
-    stage(h, k3x_.data(), k3v_.data());
-    derivatives(xs_.data(), vs_.data(), ramp(t + h), k4x_.data(), k4v_.data());
-    for (int i = 0; i < n_; ++i) {
-      x_[i] += h6 * (k1x_[i] + 2.0 * k2x_[i] + 2.0 * k3x_[i] + k4x_[i]);
-      v_[i] += h6 * (k1v_[i] + 2.0 * k2v_[i] + 2.0 * k3v_[i] + k4v_[i]);
-    }
-    ++steps_;
-  }
-
-  void advance(int steps) {
-    for (int s = 0; s < steps; ++s) step();
-  }
-  const std::vector<double>& psi() const { return x_; }
-  const std::vector<double>& vel() const { return v_; }
-
- private:
-  void derivatives(const double* x, const double* v, double f, double* kx, double* kv) const {
-    const double g2 = 2.0 * gamma_;
-    const int n = n_;
-    kx[0] = v[0];
-    kv[0] = -2.0 * x[0] + x[1] - g2 * v[0];
-    for (int i = 1; i < n - 1; ++i) {
-      kx[i] = v[i];
-      kv[i] = x[i - 1] - 2.0 * x[i] + x[i + 1] - g2 * v[i];
-    }
-    kx[n - 1] = v[n - 1];
-    kv[n - 1] = x[n - 2] - x[n - 1] - g2 * v[n - 1] + f;
-  }
-
-  void stage(double c, const double* kx, const double* kv) {
-    for (int i = 0; i < n_; ++i) {
-      xs_[i] = x_[i] + c * kx[i];
-      vs_[i] = v_[i] + c * kv[i];
-    }
-  }
-
-  int n_;
-  double gamma_, dt_;
-  std::int64_t steps_ = 0;
-  std::vector<double> x_, v_, k1x_, k1v_, k2x_, k2v_, k3x_, k3v_, k4x_, k4v_, xs_, vs_;
-};
 
 // The same interface over cb::Integrator, for warm_up().
 struct FusedSim {
@@ -176,14 +56,20 @@ cb::Forcing ramp_forcing() {
 }
 
 // ---------------------------------------------------------------------------------------
-// Args: {beads, threads, breakable}. Breakable uses a finite threshold no spring can
-// reach, so the result is the same but every step pays for the crossing checks.
+// Args: {beads, threads, breakable, simd}. Breakable uses a finite threshold no spring can
+// reach, so the result is the same but every step pays for the crossing checks. simd:
+// 0 sse2, 1 avx2, 2 avx512 (cb::SimdPath); a path the CPU lacks is skipped.
 void BM_FusedRK4(benchmark::State& state) {
   cb::ChainParams p;
   p.beads = static_cast<int>(state.range(0));
   p.gamma = kGamma;
   if (state.range(2) != 0) p.threshold = 1e300;
-  cb::Integrator sim(p, ramp_forcing(), {kDt, static_cast<int>(state.range(1))});
+  const auto simd = static_cast<cb::SimdPath>(state.range(3));
+  if (!cb::simd_supported(simd)) {
+    state.SkipWithError((std::string("no ") + cb::simd_name(simd) + " on this CPU").c_str());
+    return;
+  }
+  cb::Integrator sim(p, ramp_forcing(), {kDt, static_cast<int>(state.range(1)), simd});
   FusedSim fused{sim};
   warm_up(fused);
   const int steps = steps_per_iteration(p.beads);
@@ -198,19 +84,41 @@ void BM_FusedRK4(benchmark::State& state) {
   state.counters["subnormal"] = static_cast<double>(beads_subnormal(fused.psi(), fused.vel()));
 }
 
-// Args: {beads}. One thread.
+// Args: {beads}. One thread, this file's flags (the physics core's: baseline x86-64).
 void BM_PlainRK4(benchmark::State& state) {
-  const int beads = static_cast<int>(state.range(0));
-  PlainRk4 sim(beads, kGamma, kDt);
-  warm_up(sim);
-  const int steps = steps_per_iteration(beads);
-  for (auto _ : state) {
-    sim.advance(steps);
-    benchmark::ClobberMemory();
+  run_plain_rk4(state);
+}
+
+// Flush-to-zero and denormals-are-zero (MXCSR) for the calling thread, or IEEE subnormals.
+class FlushSubnormals {
+ public:
+  explicit FlushSubnormals(bool on) : saved_(_mm_getcsr()) {
+    constexpr unsigned kFtz = 0x8000, kDaz = 0x0040;
+    _mm_setcsr(on ? saved_ | kFtz | kDaz : saved_ & ~(kFtz | kDaz));
   }
-  benchmark::DoNotOptimize(sim.psi().back());
-  set_counters(state, beads, steps, 368);
-  state.counters["subnormal"] = static_cast<double>(beads_subnormal(sim.psi(), sim.vel()));
+  ~FlushSubnormals() { _mm_setcsr(saved_); }
+  FlushSubnormals(const FlushSubnormals&) = delete;
+  FlushSubnormals& operator=(const FlushSubnormals&) = delete;
+
+ private:
+  unsigned saved_;
+};
+
+// Args: {beads, ftz}. A chain from rest, as every real run starts: each iteration integrates
+// a fresh N = 1000 chain for kFromRestSteps steps (tau = 200), while the subnormal band ahead
+// of the wave front is inside the chain, with IEEE subnormals (0) or FTZ/DAZ (1).
+constexpr int kFromRestSteps = 20000;
+void BM_FusedFromRest(benchmark::State& state) {
+  cb::ChainParams p;
+  p.beads = static_cast<int>(state.range(0));
+  p.gamma = kGamma;
+  const FlushSubnormals mode(state.range(1) != 0);
+  for (auto _ : state) {
+    cb::Integrator sim(p, ramp_forcing(), {kDt, 1});
+    sim.advance_to(kFromRestSteps);
+    benchmark::DoNotOptimize(sim.state().psi.back());
+  }
+  set_counters(state, p.beads, kFromRestSteps, 32);
 }
 
 // Args: {elements}. bytes_per_second counts 24 B per element (read b, c; write a),
@@ -232,17 +140,27 @@ void BM_Triad(benchmark::State& state) {
   state.SetBytesProcessed(static_cast<std::int64_t>(24 * n * state.iterations()));
 }
 
-constexpr int kRepetitions = 5;
-constexpr double kMinTime = 0.2;  // seconds per repetition
-
-// Wall-clock time: the Integrator's second thread is not the benchmark's thread, so CPU
-// time would hide it. Medians over repetitions, which main() interleaves at random.
-void common(benchmark::internal::Benchmark* b) {
-  b->Unit(benchmark::kMillisecond)
-      ->MinTime(kMinTime)
-      ->UseRealTime()
-      ->Repetitions(kRepetitions)
-      ->ReportAggregatesOnly(true);
+// Args: {elements, threads}. The same triad split into `threads` contiguous halves on the
+// Integrator's own worker pool: the ceiling of a multi-threaded fused step.
+void BM_TriadThreads(benchmark::State& state) {
+  const std::size_t n = static_cast<std::size_t>(state.range(0));
+  const int threads = static_cast<int>(state.range(1));
+  std::vector<double> a(n, 0.0), b(n, 1.0), c(n, 2.0);
+  cb::detail::WorkerPool pool(threads);
+  const double s = 3.0;
+  const std::function<void(int)> part = [&](int w) {
+    const std::size_t lo = n * w / threads, hi = n * (w + 1) / threads;
+    double* pa = a.data();
+    const double* pb = b.data();
+    const double* pc = c.data();
+    for (std::size_t i = lo; i < hi; ++i) pa[i] = pb[i] + s * pc[i];
+  };
+  for (auto _ : state) {
+    pool.run(part);
+    benchmark::ClobberMemory();
+  }
+  benchmark::DoNotOptimize(a[n / 2]);
+  state.SetBytesProcessed(static_cast<std::int64_t>(24 * n * state.iterations()));
 }
 
 // The Integrator caps its workers at 1 + N / 20000, so at N = 30 and 1e3 "threads:2"
@@ -256,10 +174,15 @@ BENCHMARK(BM_PlainRK4)
     ->Arg(1'000'000)
     ->Arg(10'000'000)
     ->Apply(common);
+BENCHMARK(BM_FusedFromRest)->ArgNames({"N", "ftz"})->ArgsProduct({{1'000}, {0, 1}})->Apply(common);
+BENCHMARK(BM_TriadThreads)->Args({10'000'000, 2})->Apply(common);
+// Every instruction set at every N on one thread; two threads only where the Integrator
+// uses them (N >= 20000 per extra worker).
 BENCHMARK(BM_FusedRK4)
-    ->ArgNames({"N", "threads", "breakable"})
-    ->ArgsProduct({{30, 1'000, 1'000'000, 10'000'000}, {1, 2}, {0}})
-    ->Args({1'000'000, 1, 1})
+    ->ArgNames({"N", "threads", "breakable", "simd"})
+    ->ArgsProduct({{30, 1'000, 1'000'000, 10'000'000}, {1}, {0}, {0, 1, 2}})
+    ->ArgsProduct({{1'000'000, 10'000'000}, {2}, {0}, {0, 1, 2}})
+    ->Args({1'000'000, 1, 1, 2})
     ->Apply(common);
 
 // The baseline must solve the same equations: after 500 steps of dt = 0.01 on 1000
@@ -286,9 +209,36 @@ bool baseline_agrees() {
   return scale > 0.0 && diff <= 1e-12 * scale;
 }
 
+// What flush-to-zero would do to the results: the same from-rest run with and without it.
+void report_ftz_effect() {
+  cb::ChainParams p;
+  p.beads = 1000;
+  p.gamma = kGamma;
+  auto run = [&](bool ftz) {
+    const FlushSubnormals mode(ftz);
+    cb::Integrator sim(p, ramp_forcing(), {kDt, 1});
+    sim.advance_to(kFromRestSteps);
+    return sim.state();
+  };
+  const cb::ChainState ieee = run(false), flushed = run(true);
+  double diff = 0.0, scale = 0.0;
+  int differing = 0;
+  for (int i = 0; i < p.beads; ++i) {
+    const double d = std::abs(ieee.psi[i] - flushed.psi[i]);
+    diff = std::max(diff, d);
+    differing += ieee.psi[i] != flushed.psi[i];
+    scale = std::max(scale, std::abs(ieee.psi[i]));
+  }
+  std::printf(
+      "ftz check (N=%d from rest, %d steps): %d beads differ, max |diff| %.3g (max |psi| %.3g), "
+      "work %.17g vs %.17g\n",
+      p.beads, kFromRestSteps, differing, diff, scale, ieee.work, flushed.work);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  report_ftz_effect();
   if (!baseline_agrees()) {
     std::fprintf(stderr,
                  "bench_rk4: the plain RK4 baseline disagrees with cb::Integrator; "

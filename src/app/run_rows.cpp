@@ -1,0 +1,171 @@
+#include "app/run_rows.h"
+
+#include "physics/run_loop.h"
+
+#include <cmath>
+#include <memory>
+
+#include "exact/continuum.h"
+#include "exact/exact_chain.h"
+#include "physics/energy.h"
+#include "physics/integrator.h"
+
+namespace cb {
+
+namespace {
+
+// The last step of the run: t_end, or after_break past the first break.
+std::int64_t planned_steps(const SceneDesc& s) {
+  return std::llround(s.integrator.t_end / s.integrator.dt);
+}
+
+bool stopped(const RunRequest& r) {
+  return r.stop && r.stop->load(std::memory_order_relaxed);
+}
+
+void report(const RunRequest& r, std::int64_t step) {
+  if (r.on_progress) r.on_progress(static_cast<double>(step));
+}
+
+// Per particle as in Eq. (energy), from psi' and phi of any solver.
+void set_energy(RunRow& row, const EnergyParts& e, int beads) {
+  row.energy = per_particle(e.total(), beads);
+  row.kinetic = per_particle(e.kinetic, beads);
+  row.potential = per_particle(e.potential, beads);
+}
+
+EnergyParts energy_of(const std::vector<double>& vel, const std::vector<double>& phi) {
+  EnergyParts e;
+  for (double v : vel) e.kinetic += 0.5 * v * v;
+  for (double p : phi) e.potential += 0.5 * p * p;
+  return e;
+}
+
+RunOutcome run_rk4(const SceneDesc& scene, const RunRequest& req, RowSink* sink) {
+  RunOutcome out;
+  const double dt = scene.integrator.dt;
+  Integrator sim(scene.chain, make_forcing(scene.drive), {dt, req.threads});
+  const std::int64_t last = planned_steps(scene);
+  out.max_steps = last;
+  const int n = scene.chain.beads;
+  std::vector<double> phi(n);
+  RunRow row;
+  row.phi = &phi;
+  if (sink) sink->begin(n, req.psi, last / req.every + 1);
+  auto write_row = [&] {
+    const ChainState& s = sim.state();
+    row.tau = s.tau;
+    row.f = sim.force_now();
+    for (int j = 1; j <= n; ++j) phi[j - 1] = extension(s, j);
+    row.psi = req.psi ? &s.psi : nullptr;
+    set_energy(row, energy(s), n);
+    sink->row(row);
+  };
+  // One run loop (physics/run_loop.h): t_end, after_break past the first break, the stop flag.
+  const StopRule stop{last, scene.integrator.after_break, false, req.stop};
+  std::vector<Observer> observers;
+  if (sink) observers.push_back({req.every, true, [&](const Integrator&) { write_row(); }});
+  observers.push_back({1, false, [&](const Integrator& s) { report(req, s.state().step); }});
+  switch (run_until(sim, stop, observers)) {
+    case RunEnd::Reached:
+      break;
+    case RunEnd::Cancelled:
+      out.status = 130;
+      break;
+    case RunEnd::Failed:
+      out.status = 1;
+      out.error = sim.error();
+      break;
+  }
+  out.steps = sim.state().step;
+  out.tau_end = sim.state().tau;
+  out.breaks = sim.state().breaks;
+  out.final_state = sim.state();
+  out.simd = sim.simd();
+  return out;
+}
+
+// Exact and continuum formulas at the rk4 grid's times (every `every` steps), no breaking.
+RunOutcome run_formula(const SceneDesc& scene, const RunRequest& req, RowSink* sink) {
+  RunOutcome out;
+  const int n = scene.chain.beads;
+  const double dt = scene.integrator.dt;
+  const std::int64_t last = planned_steps(scene);
+  out.max_steps = last;
+  const bool exact = req.solver == "exact";
+  std::unique_ptr<ExactChain> chain;
+  if (exact) chain = std::make_unique<ExactChain>(n, scene.chain.gamma, scene.drive);
+  const Forcing forcing = make_forcing(scene.drive);
+  auto f = [&](double tau) { return forcing(tau); };
+  std::vector<double> psi(n), vel(n), phi(n);
+  RunRow row;
+  row.phi = &phi;
+  row.psi = req.psi ? &psi : nullptr;
+  // Continuum: phi from Eq. (sum); psi by summing phi; psi' by a central difference.
+  std::vector<double> before(n), after(n);
+  const std::function<double(double)> drive = f;
+  auto continuum_psi = [&](double tau, std::vector<double>& out_psi, std::vector<double>* out_phi) {
+    continuum_profile(n, tau, drive, out_psi, out_phi);
+  };
+  if (sink) sink->begin(n, req.psi, last / req.every + 1);
+  for (std::int64_t step = 0; sink && step <= last; step += req.every) {
+    if (stopped(req)) {
+      out.status = 130;
+      out.tau_end = static_cast<double>(step) * dt;
+      return out;
+    }
+    row.tau = static_cast<double>(step) * dt;
+    row.f = f(row.tau);
+    if (exact) {
+      chain->evaluate(row.tau, &psi, &vel, &phi, nullptr);
+    } else {
+      constexpr double kDelta = 1e-4;
+      continuum_psi(row.tau, psi, &phi);
+      continuum_psi(row.tau + kDelta, after, nullptr);
+      continuum_psi(std::max(0.0, row.tau - kDelta), before, nullptr);
+      const double span = row.tau + kDelta - std::max(0.0, row.tau - kDelta);
+      for (int i = 0; i < n; ++i) vel[i] = (after[i] - before[i]) / span;
+    }
+    set_energy(row, energy_of(vel, phi), n);
+    sink->row(row);
+    report(req, step);
+  }
+  out.steps = last;
+  out.tau_end = static_cast<double>(last) * dt;
+  // The exact first break needs closed forms: not available for an expr drive.
+  if (exact && scene.chain.breakable() && scene.drive.type != DriveType::Expr)
+    out.exact_break = exact_first_break(scene.chain, scene.drive, out.tau_end);
+  return out;
+}
+
+}  // namespace
+
+void continuum_profile(int beads, double tau, const std::function<double(double)>& f,
+                       std::vector<double>& psi, std::vector<double>* phi) {
+  double sum = 0.0;
+  for (int j = 1; j <= beads; ++j) {
+    const double p = continuum_phi_sum(beads, j, tau, f);
+    if (phi) (*phi)[j - 1] = p;
+    sum += p;
+    psi[j - 1] = sum;
+  }
+}
+
+void check_run_request(const SceneDesc& scene, const RunRequest& request) {
+  if (request.every < 1)
+    throw SceneError("--every " + std::to_string(request.every) + ": must be 1 or more");
+  if (request.solver != "rk4" && request.solver != "exact" && request.solver != "continuum")
+    throw SceneError("--solver " + request.solver + ": expected rk4, exact or continuum");
+  if (request.solver == "continuum" && scene.drive.type == DriveType::Impulses)
+    throw SceneError(scene.path +
+                     ": the continuum formula Eq. (sum) needs a drive with values; impulses are "
+                     "delta functions. Use --solver exact or rk4");
+}
+
+RunOutcome run_scene(const SceneDesc& scene, const RunRequest& request, RowSink* sink) {
+  check_run_request(scene, request);
+  if (request.solver == "rk4") return run_rk4(scene, request, sink);
+  return run_formula(scene, request, sink);
+}
+
+}  // namespace cb

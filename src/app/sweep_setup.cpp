@@ -1,0 +1,92 @@
+#include "version.h"  // CHAINBREAK_VERSION (src/cmake/version.cmake)
+#include "app/sweep_setup.h"
+
+#include <filesystem>
+
+#include "app/csv.h"
+#include "scene/scene_hash.h"
+
+namespace cb {
+
+namespace fs = std::filesystem;
+
+Grid sweep_grid(const SweepOptions& o) {
+  Grid grid;
+  for (const auto& spec : o.axes) {
+    const bool list = spec.rfind("--values ", 0) == 0;
+    const std::string text = spec.substr(spec.find(' ') + 1);
+    add_axis(grid, list ? parse_values(text) : parse_vary(text));
+  }
+  if (grid.axes.empty())
+    throw GridError(
+        "sweep: nothing to vary; give --vary KEY=LO:HI:COUNT[:log] or --values "
+        "KEY=V1,V2,... (several make a grid)");
+  check_grid_size(grid, std::size_t{1} << 40);
+  // Each key must be a number the scene takes: try its first value on the scene now, so an
+  // unknown key names the option that brought it, not "--set".
+  for (const auto& axis : grid.axes) {
+    for (const auto& o2 : o.overrides)
+      if (o2.key == axis.key)
+        throw GridError(axis.spec + ": " + axis.key + " is also set by --set " + o2.key + "=" +
+                        o2.value + "; drop one of them");
+    auto overrides = o.overrides;
+    overrides.push_back({axis.key, number_text(axis.values.front())});
+    try {
+      load_scene(o.scene, overrides);
+    } catch (const SceneError& e) {
+      // The scene names the override "--set KEY=VALUE"; name the option the user typed.
+      std::string what = e.what();
+      const std::string set = "--set " + axis.key + "=";
+      const auto colon = what.find(": ");
+      if (what.rfind(set, 0) == 0 && colon != std::string::npos)
+        what = axis.spec + what.substr(colon);
+      throw SceneError(what);
+    }
+  }
+  return grid;
+}
+
+std::vector<SceneDesc> point_scenes(const SweepOptions& o, const Grid& grid, PointRange range) {
+  std::vector<SceneDesc> scenes;
+  scenes.reserve(range.size());
+  for (std::size_t i = range.first; i < range.last; ++i) {
+    auto overrides = o.overrides;
+    const auto values = grid.point(i);
+    for (std::size_t k = 0; k < values.size(); ++k)
+      overrides.push_back({grid.axes[k].key, number_text(values[k])});
+    scenes.push_back(load_scene(o.scene, overrides));
+    if (o.solver == "exact" && scenes.back().drive.type == DriveType::Expr)
+      throw SceneError(
+          o.scene +
+          ": the exact first break has no closed form for an expr drive; use --solver rk4");
+  }
+  return scenes;
+}
+
+ShardRecord sweep_record(const SweepOptions& o, const Grid& grid) {
+  ShardRecord r;
+  r.version = CHAINBREAK_VERSION;
+  r.scene = o.scene;
+  r.scene_hash = scene_hash(o.scene, o.overrides);
+  r.solver = o.solver;
+  r.header = grid.csv_header();
+  r.grid = grid;
+  r.command = {"sweep", fs::absolute(o.scene).string()};
+  for (const auto& s : o.overrides)
+    r.command.insert(r.command.end(), {"--set", s.key + "=" + s.value});
+  for (const auto& a : grid.axes) {
+    const auto space = a.spec.find(' ');
+    r.command.push_back(a.spec.substr(0, space));
+    r.command.push_back(a.spec.substr(space + 1));
+  }
+  r.command.insert(r.command.end(), {"--solver", o.solver});
+  return r;
+}
+
+std::string chainbreak_exe() {
+  std::error_code ec;
+  const auto p = fs::read_symlink("/proc/self/exe", ec);
+  return ec ? std::string("chainbreak") : p.string();
+}
+
+}  // namespace cb

@@ -1,0 +1,30 @@
+// What `sweep`, `sweep --submit` and `merge` share: the grid built from the command line (its
+// axes in the order given), each point's scene, checked before any work, and the record that
+// describes a sweep's output (cluster/shard_record.h).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "app/commands.h"
+#include "cluster/grid.h"
+#include "cluster/shard_record.h"
+
+namespace cb {
+
+// The grid of --vary / --values; GridError for a bad spec. Every key is checked against the
+// scene (an unknown key or a value the scene refuses is a SceneError naming the option).
+Grid sweep_grid(const SweepOptions& o);
+// The scenes of points [range): every value validated before any work.
+std::vector<SceneDesc> point_scenes(const SweepOptions& o, const Grid& grid, PointRange range);
+// The record of this sweep without shard, timing or host: scene, hash, solver, header, grid
+// and the command that recomputes it.
+ShardRecord sweep_record(const SweepOptions& o, const Grid& grid);
+// This program's absolute path, for commands printed or written into scripts.
+std::string chainbreak_exe();
+// Merges the shard CSVs into `csv` (and its .json), or reports missing and duplicated points
+// with the commands that recompute just those shards: status 0 or 1 (MergeError for shards
+// that do not belong together).
+int merge_shards(const std::string& csv, const std::vector<std::string>& shard_csvs, bool quiet);
+
+}  // namespace cb

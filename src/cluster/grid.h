@@ -1,0 +1,45 @@
+// A sweep's grid of parameters as plain data: named axes, each a list of values, and their
+// cartesian product numbered with the first axis slowest (point 0 is every axis's first
+// value). No scene, no I/O: the same structs can be filled and read from a Python module.
+#pragma once
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace cb {
+
+// A grid spec a user can fix (COUNT 0, a log axis through zero, a key given twice): the
+// message says what, where (the option as typed) and how to fix it. The app exits with 2.
+struct GridError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct GridAxis {
+  std::string key;             // scene key, e.g. "chain.threshold"
+  std::vector<double> values;  // in sweep order
+  std::string spec;            // as typed: "--vary chain.threshold=1:300:420"
+};
+
+struct Grid {
+  std::vector<GridAxis> axes;  // first axis slowest
+
+  std::size_t size() const;  // product of the axes' lengths (0 without axes)
+  // The values of point `index` (< size()), one per axis.
+  std::vector<double> point(std::size_t index) const;
+  // CSV header: "value,spring,tau" for one axis (the historical header scripts read),
+  // otherwise one column per key then "spring,tau".
+  std::string csv_header() const;
+};
+
+// KEY=LO:HI:COUNT[:log]: COUNT values from LO to HI, evenly spaced (geometrically with :log).
+GridAxis parse_vary(const std::string& text);
+// KEY=V1,V2,...: an explicit list, in the order given.
+GridAxis parse_values(const std::string& text);
+// Appends `axis`, refusing a key the grid already varies.
+void add_axis(Grid& grid, GridAxis axis);
+// Refuses grids whose point count does not fit (each axis's count multiplied).
+void check_grid_size(const Grid& grid, std::size_t limit);
+
+}  // namespace cb

@@ -1,0 +1,12 @@
+// The fused RK4 kernel (rk4_tile_kernel.inc) compiled for the x86-64 baseline: no pragma, every
+// x86-64 CPU runs it.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "physics/rk4_tile.h"
+
+namespace cb::detail::sse2 {
+#include "physics/rk4_tile_kernel.inc"
+}  // namespace cb::detail::sse2

@@ -1,0 +1,40 @@
+#include "physics/run_loop.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cb {
+
+std::int64_t after_break_step(double break_tau, double after_break, double dt) {
+  return static_cast<std::int64_t>(std::ceil((break_tau + after_break) / dt - 1e-9));
+}
+
+RunEnd run_until(Integrator& sim, const StopRule& stop, const std::vector<Observer>& observers) {
+  auto observe = [&](bool start) {
+    const std::int64_t step = sim.state().step;
+    for (const Observer& o : observers)
+      if ((!start || o.at_start) && step % o.every == 0) o.see(sim);
+  };
+  std::int64_t last = stop.last_step;
+  // A run resumed after its first break (the viewer, advance_to) applies the rule at once.
+  bool break_seen = false;
+  auto on_break = [&] {
+    if (break_seen || sim.state().breaks.empty()) return false;
+    break_seen = true;
+    if (stop.after_break)
+      last = std::min(
+          last, after_break_step(sim.state().breaks.front().tau, *stop.after_break, sim.dt()));
+    return stop.at_first_break;
+  };
+  if (on_break()) return RunEnd::Reached;
+  observe(true);
+  while (sim.state().step < last) {
+    if (stop.cancel && stop.cancel->load(std::memory_order_relaxed)) return RunEnd::Cancelled;
+    if (!sim.step()) return RunEnd::Failed;
+    observe(false);
+    if (on_break()) return RunEnd::Reached;
+  }
+  return RunEnd::Reached;
+}
+
+}  // namespace cb

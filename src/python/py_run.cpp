@@ -1,0 +1,191 @@
+// chainbreak.run and chainbreak.Result: the rows `chainbreak run` writes as CSV, as numpy
+// arrays, from the same producer (app/run_rows.h) and the same RunRow values.
+#include <pybind11/stl.h>
+
+#include <cmath>
+
+#include "app/csv.h"
+#include "app/run_rows.h"
+#include "interruptible.h"
+#include "physics/energy.h"
+#include "py_common.h"
+
+namespace cb::py_detail {
+
+namespace {
+
+// Rows straight into vectors reserved once; handed to numpy without a copy at the end.
+class ArraySink : public RowSink {
+ public:
+  void begin(int beads, bool with_psi, std::int64_t max_rows) override {
+    beads_ = beads;
+    with_psi_ = with_psi;
+    // Reserve when it is modest (a run that stops at a break keeps fewer rows); beyond
+    // that, let the vectors grow.
+    constexpr double kReserveLimit = 1u << 30;  // bytes
+    const double row_bytes = 8.0 * beads * (with_psi ? 2 : 1) + 40.0;
+    if (static_cast<double>(max_rows) * row_bytes <= kReserveLimit) {
+      const auto rows = static_cast<std::size_t>(max_rows);
+      for (auto* v : {&tau, &f, &energy, &kinetic, &potential}) v->reserve(rows);
+      phi.reserve(rows * beads);
+      if (with_psi) psi.reserve(rows * beads);
+    }
+  }
+  void row(const RunRow& r) override {
+    tau.push_back(r.tau);
+    f.push_back(r.f);
+    energy.push_back(r.energy);
+    kinetic.push_back(r.kinetic);
+    potential.push_back(r.potential);
+    phi.insert(phi.end(), r.phi->begin(), r.phi->end());
+    if (r.psi) psi.insert(psi.end(), r.psi->begin(), r.psi->end());
+  }
+  int beads_ = 0;
+  bool with_psi_ = false;
+  std::vector<double> tau, f, energy, kinetic, potential, phi, psi;
+};
+
+struct Result {
+  std::string scene, title, solver;
+  int beads = 0;
+  double gamma = 0, dt = 0;
+  std::optional<double> threshold;
+  std::int64_t steps = 0;
+  double tau_end = 0;
+  py::object tau, f, energy, kinetic, potential, phi, psi = py::none();
+  std::vector<std::pair<int, double>> breaks;
+  std::optional<std::pair<int, double>> exact_first_break;
+  std::optional<double> energy_balance_error;
+  int every = 1;
+};
+
+std::string html_escape(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '<')
+      out += "&lt;";
+    else if (c == '>')
+      out += "&gt;";
+    else if (c == '&')
+      out += "&amp;";
+    else
+      out += c;
+  }
+  return out;
+}
+
+// Jupyter's summary of a Result: the scene, the run, the breaks, the arrays' shapes.
+std::string result_html(const Result& r) {
+  auto row = [](const std::string& k, const std::string& v) {
+    return "<tr><th style=\"text-align:left\">" + k + "</th><td style=\"text-align:left\">" + v +
+           "</td></tr>";
+  };
+  std::string h = "<div><b>chainbreak.Result</b>: " + html_escape(r.title) + " (" +
+                  html_escape(r.scene) + ")<table>";
+  h += row("solver", r.solver);
+  h += row("N, &gamma;, &phi;<sub>c</sub>", std::to_string(r.beads) + ", " + number_text(r.gamma) +
+                                                ", " +
+                                                (r.threshold ? number_text(*r.threshold) : "none"));
+  h += row("&tau;", "0 &hellip; " + number_text(r.tau_end) + " in " + std::to_string(r.steps) +
+                        " steps of " + number_text(r.dt) + ", a row every " +
+                        std::to_string(r.every));
+  h += row("rows", std::to_string(py::len(r.tau)) +
+                       " (phi: " + py::str(r.phi.attr("shape")).cast<std::string>() +
+                       (r.psi.is_none() ? "" : ", psi") + ")");
+  std::string breaks;
+  for (std::size_t i = 0; i < r.breaks.size() && i < 8; ++i)
+    breaks += (i ? ", " : "") + std::string("spring ") + std::to_string(r.breaks[i].first) +
+              " at &tau; = " + number_text(r.breaks[i].second);
+  if (r.breaks.size() > 8) breaks += ", &hellip; (" + std::to_string(r.breaks.size()) + ")";
+  h += row("breaks", breaks.empty() ? "none" : breaks);
+  if (r.exact_first_break)
+    h += row("exact first break", "spring " + std::to_string(r.exact_first_break->first) +
+                                      " at &tau; = " + number_text(r.exact_first_break->second));
+  if (r.energy_balance_error)
+    h += row("energy balance error", number_text(*r.energy_balance_error));
+  return h + "</table></div>";
+}
+
+Result run(const Scene& source, const std::string& solver, int every, bool psi, int threads) {
+  const SceneDesc scene = source.resolve();
+  RunRequest request;
+  request.solver = solver;
+  request.every = every;
+  request.psi = psi;
+  request.threads = threads;
+  request.stop = &g_interrupted;
+  check_run_request(scene, request);
+  ArraySink sink;
+  const RunOutcome outcome = interruptible([&] { return run_scene(scene, request, &sink); });
+  if (outcome.status == 1) throw std::runtime_error("chainbreak.run: " + outcome.error);
+  if (outcome.status != 0) {  // stopped from elsewhere (another call saw Ctrl-C)
+    PyErr_SetNone(PyExc_KeyboardInterrupt);
+    throw py::error_already_set();
+  }
+  Result r;
+  r.scene = scene.name;
+  r.title = scene.title;
+  r.solver = solver;
+  r.beads = scene.chain.beads;
+  r.gamma = scene.chain.gamma;
+  r.dt = scene.integrator.dt;
+  r.every = every;
+  if (scene.chain.breakable()) r.threshold = scene.chain.threshold;
+  r.steps = outcome.steps;
+  r.tau_end = outcome.tau_end;
+  const auto rows = static_cast<py::ssize_t>(sink.tau.size());
+  const py::ssize_t n = scene.chain.beads;
+  r.tau = to_numpy(std::move(sink.tau), {rows});
+  r.f = to_numpy(std::move(sink.f), {rows});
+  r.energy = to_numpy(std::move(sink.energy), {rows});
+  r.kinetic = to_numpy(std::move(sink.kinetic), {rows});
+  r.potential = to_numpy(std::move(sink.potential), {rows});
+  r.phi = to_numpy(std::move(sink.phi), {rows, n});
+  if (psi) r.psi = to_numpy(std::move(sink.psi), {rows, n});
+  for (const BreakEvent& b : outcome.breaks) r.breaks.emplace_back(b.spring, b.tau);
+  if (outcome.exact_break && outcome.exact_break->broke)
+    r.exact_first_break = std::make_pair(outcome.exact_break->spring, outcome.exact_break->tau);
+  if (outcome.final_state) r.energy_balance_error = energy_balance_error(*outcome.final_state);
+  return r;
+}
+
+}  // namespace
+
+void bind_run(py::module_& m) {
+  py::class_<Result>(m, "Result",
+                     "The rows of a run, as `chainbreak run --csv` writes them, bit for bit.")
+      .def_readonly("scene", &Result::scene)
+      .def_readonly("title", &Result::title)
+      .def_readonly("solver", &Result::solver)
+      .def_readonly("beads", &Result::beads)
+      .def_readonly("gamma", &Result::gamma)
+      .def_readonly("threshold", &Result::threshold)
+      .def_readonly("dt", &Result::dt)
+      .def_readonly("every", &Result::every)
+      .def_readonly("steps", &Result::steps)
+      .def_readonly("tau_end", &Result::tau_end)
+      .def_readonly("tau", &Result::tau, "tau of each row")
+      .def_readonly("f", &Result::f, "the force f(tau) on bead N")
+      .def_readonly("energy", &Result::energy, "energy per particle, Eq. (energy)")
+      .def_readonly("kinetic", &Result::kinetic)
+      .def_readonly("potential", &Result::potential)
+      .def_readonly("phi", &Result::phi, "[rows, N]: phi[:, j-1] is spring j's extension")
+      .def_readonly("psi", &Result::psi, "[rows, N] with psi=True, else None")
+      .def_readonly("breaks", &Result::breaks, "[(spring, tau), ...] in order (rk4)")
+      .def_readonly("exact_first_break", &Result::exact_first_break,
+                    "(spring, tau) of the exact solution (solver='exact' with a threshold)")
+      .def_readonly("energy_balance_error", &Result::energy_balance_error)
+      .def("_repr_html_", &result_html)
+      .def("__repr__", [](const Result& r) {
+        return "<chainbreak.Result " + r.scene + " " + r.solver + ": " +
+               std::to_string(py::len(r.tau)) + " rows, N=" + std::to_string(r.beads) + ", " +
+               std::to_string(r.breaks.size()) + " breaks>";
+      });
+  m.def("run", &run, py::arg("scene"), py::arg("solver") = "rk4", py::arg("every") = 1,
+        py::arg("psi") = false, py::arg("threads") = 1,
+        "Run a scene like `chainbreak run`: solver 'rk4' (with breaking), 'exact' or "
+        "'continuum'; one row every `every` steps; psi=True adds psi. Releases the GIL; "
+        "Ctrl-C raises KeyboardInterrupt.");
+}
+
+}  // namespace cb::py_detail

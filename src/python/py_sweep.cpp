@@ -1,0 +1,101 @@
+// chainbreak.sweep: which spring breaks first over a grid of scene values, by the per-value
+// work of `chainbreak sweep` (app/sweep_values.h).
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <limits>
+
+#include "app/csv.h"
+#include "app/sweep_values.h"
+#include "interruptible.h"
+#include "py_common.h"
+
+namespace cb::py_detail {
+
+namespace {
+
+using Values = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// The grid: the cartesian product of the keys' values, the first key varying slowest (numpy's
+// meshgrid(..., indexing="ij") flattened). Each point is the scene with one --set per key,
+// the value written as `chainbreak sweep` writes it (shortest round trip), so the scene reads
+// back exactly the double in the array.
+struct Grid {
+  std::vector<std::string> keys;
+  std::vector<std::vector<double>> values;  // per key
+  std::size_t size() const {
+    std::size_t n = 1;
+    for (const auto& v : values) n *= v.size();
+    return n;
+  }
+  std::vector<double> point(std::size_t index) const {
+    std::vector<double> p(keys.size());
+    for (std::size_t k = keys.size(); k-- > 0;) {
+      p[k] = values[k][index % values[k].size()];
+      index /= values[k].size();
+    }
+    return p;
+  }
+};
+
+py::dict sweep(const Scene& source, const py::dict& vary, const std::string& solver, int jobs) {
+  if (vary.empty())
+    throw SceneError("sweep: vary is empty; give e.g. vary={'drive.beta': numpy.linspace(...)}");
+  Grid grid;
+  for (const auto& [key, values] : vary) {
+    grid.keys.push_back(py::str(key).cast<std::string>());
+    const Values array = Values::ensure(values);
+    if (!array || array.ndim() > 1 || array.size() == 0)
+      throw SceneError("sweep: vary['" + grid.keys.back() +
+                       "'] must be a non-empty 1-D sequence of numbers");
+    grid.values.emplace_back(array.data(), array.data() + array.size());
+  }
+  // Every point is read and checked before any work: a bad value fails now.
+  std::vector<SceneDesc> scenes;
+  scenes.reserve(grid.size());
+  for (std::size_t i = 0; i < grid.size(); ++i) {
+    const std::vector<double> p = grid.point(i);
+    std::vector<Override> overrides;
+    for (std::size_t k = 0; k < p.size(); ++k)
+      overrides.push_back({grid.keys[k], number_text(p[k])});
+    scenes.push_back(source.resolve(overrides));
+    check_sweep_scene(scenes.back(), solver);
+  }
+  const std::vector<FirstBreak> breaks =
+      interruptible([&] { return sweep_first_breaks(scenes, solver, jobs, &g_interrupted, {}); });
+  if (g_interrupted) {  // stopped from elsewhere (another call saw Ctrl-C)
+    PyErr_SetNone(PyExc_KeyboardInterrupt);
+    throw py::error_already_set();
+  }
+  const auto n = static_cast<py::ssize_t>(grid.size());
+  py::dict out;
+  for (std::size_t k = 0; k < grid.keys.size(); ++k) {
+    std::vector<double> column(grid.size());
+    for (std::size_t i = 0; i < grid.size(); ++i) column[i] = grid.point(i)[k];
+    out[py::str(grid.keys[k])] = to_numpy(std::move(column), {n});
+  }
+  std::vector<std::int64_t> spring(grid.size(), -1);
+  std::vector<double> tau(grid.size(), std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t i = 0; i < breaks.size(); ++i)
+    if (breaks[i].broke) {
+      spring[i] = breaks[i].spring;
+      tau[i] = breaks[i].tau;
+    }
+  out["spring"] = to_numpy(std::move(spring), {n});
+  out["tau"] = to_numpy(std::move(tau), {n});
+  return out;
+}
+
+}  // namespace
+
+void bind_sweep(py::module_& m) {
+  m.def("sweep", &sweep, py::arg("scene"), py::arg("vary"), py::arg("solver") = "rk4",
+        py::arg("jobs") = 0,
+        "The first break over a grid, like `chainbreak sweep`: vary={'drive.beta': values, ...} "
+        "(several keys: their cartesian product, the first key slowest). Returns a dict of "
+        "arrays: one column per key, 'spring' (0 = the pull string, -1 = nothing broke by "
+        "t_end) and 'tau' (NaN when nothing broke). solver 'rk4' or 'exact'; jobs threads "
+        "(0: all cores). Releases the GIL; Ctrl-C raises KeyboardInterrupt.");
+}
+
+}  // namespace cb::py_detail

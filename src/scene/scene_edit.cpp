@@ -1,0 +1,114 @@
+// set_scene_number(): one numeric key of an in-memory scene, as a scene file would give it.
+//
+// Why: `sweep` varies one key over hundreds of values; reading and parsing the scene file
+// again for each was the only way to have each value checked. Now the value is converted to
+// Eq. (dimless) form here and checked by validate(), the same rules as the file's.
+#include <climits>
+#include <cmath>
+
+#include "scene/scene.h"
+#include "scene/scene_reader.h"
+#include "scene/scene_units.h"
+
+namespace cb {
+
+namespace {
+
+enum class Quantity { Plain, Time, Force, Slope };
+
+struct NumberKey {
+  const char* key;
+  Quantity quantity;
+  double* (*field)(SceneDesc&);
+};
+
+// The keys a double of the scene holds directly; beads and the frame size are whole
+// numbers and handled apart.
+const NumberKey kNumberKeys[] = {
+    {"chain.threshold", Quantity::Force, [](SceneDesc& s) { return &s.chain.threshold; }},
+    {"drive.beta", Quantity::Slope, [](SceneDesc& s) { return &s.drive.beta; }},
+    {"drive.amplitude", Quantity::Force, [](SceneDesc& s) { return &s.drive.amplitude; }},
+    {"drive.period", Quantity::Time, [](SceneDesc& s) { return &s.drive.period; }},
+    {"drive.t0", Quantity::Time, [](SceneDesc& s) { return &s.drive.t0; }},
+    {"integrator.dt", Quantity::Time, [](SceneDesc& s) { return &s.integrator.dt; }},
+    {"integrator.t_end", Quantity::Time, [](SceneDesc& s) { return &s.integrator.t_end; }},
+    {"render.fps", Quantity::Plain, [](SceneDesc& s) { return &s.render.fps; }},
+    {"render.speed", Quantity::Plain, [](SceneDesc& s) { return &s.render.speed; }},
+};
+
+double converted(const scene_detail::Conversion& c, Quantity q, double v) {
+  switch (q) {
+    case Quantity::Time:
+      return c.time(v);
+    case Quantity::Force:
+      return c.force(v);
+    case Quantity::Slope:
+      return c.slope(v);
+    case Quantity::Plain:
+      break;
+  }
+  return v;
+}
+
+int whole(const std::string& key, double v, const std::string& origin) {
+  if (v != std::floor(v) || std::abs(v) > INT_MAX)
+    throw SceneError(origin + ": " + key + " must be an integer (a whole number), got " +
+                     std::to_string(v));
+  return static_cast<int>(v);
+}
+
+}  // namespace
+
+bool set_scene_number(SceneDesc& scene, const std::string& key, double value,
+                      const std::string& origin) {
+  const scene_detail::Conversion c = scene_detail::conversion_for(scene.units);
+  SceneDesc next = scene;
+  if (key == "chain.beads") {
+    next.chain.beads = whole(key, value, origin);
+  } else if (key == "render.width") {
+    next.render.width = whole(key, value, origin);
+  } else if (key == "render.height") {
+    next.render.height = whole(key, value, origin);
+  } else if (key == "integrator.after_break") {
+    next.integrator.after_break = c.time(value);
+  } else if (key == "chain.gamma") {
+    // With units.friction given, gamma follows from it and the reader must settle the two.
+    if (scene.units && scene.origins.count("units.friction")) return false;
+    next.chain.gamma = value;
+    if (next.units) next.units->friction = value * 2.0 * next.units->mass * next.units->omega0();
+  } else {
+    const NumberKey* found = nullptr;
+    for (const NumberKey& k : kNumberKeys)
+      if (key == k.key) found = &k;
+    if (!found) return false;
+    *found->field(next) = converted(c, found->quantity, value);
+  }
+  next.origins[key] = origin;
+  validate(next);
+  scene = std::move(next);
+  return true;
+}
+
+SceneVariations::SceneVariations(std::string path, std::vector<Override> overrides)
+    : path_(std::move(path)), overrides_(std::move(overrides)), text_(read_scene_text(path_)) {
+  // A scene that fails alone may still pass with the varied value (a dt too large for the
+  // scene's N, swept down): then each value is parsed from the text, as an override.
+  try {
+    base_ = parse_scene(text_, path_, overrides_);
+  } catch (const SceneError&) {
+    base_.reset();
+  }
+}
+
+SceneDesc SceneVariations::with(const std::string& key, double value,
+                                const std::string& origin) const {
+  if (base_) {
+    SceneDesc scene = *base_;
+    if (set_scene_number(scene, key, value, origin)) return scene;
+  }
+  auto overrides = overrides_;
+  overrides.push_back({key, scene_detail::format_exact(value)});
+  return parse_scene(text_, path_, overrides);
+}
+
+}  // namespace cb

@@ -1,0 +1,64 @@
+#!/usr/bin/python3
+"""Times the 420-value sweep of issue 13 with --solver rk4 and with --solver exact, in one run.
+
+    /usr/bin/python3 tests/bench/sweep_bench.py ./build/chainbreak [--repeat 3] [--jobs 2]
+
+The sweep is `sweep scenes/anomalous_breaking.toml --vary drive.beta=0.005:1:420:log`. The two
+solvers alternate (rk4, exact, rk4, exact, ...) so a drift of the machine's speed during the
+run (PLATFORM-NOTES.md) falls on both; the medians of the wall-clock times and their ratio are
+printed, with the CHAINBREAK_SIMD path that ran. Both CSVs of one repetition must name the same
+first-breaking spring for every value (a sweep that is fast but wrong does not count).
+"""
+import argparse
+import csv
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SCENE = os.path.join(HERE, "..", "..", "scenes", "anomalous_breaking.toml")
+
+
+def sweep(exe, solver, jobs, out):
+    cmd = [exe, "sweep", SCENE, "--vary", "drive.beta=0.005:1:420:log", "--solver", solver,
+           "--jobs", str(jobs), "--csv", out, "--quiet"]
+    t0 = time.perf_counter()
+    subprocess.run(cmd, check=True)
+    return time.perf_counter() - t0
+
+
+def springs(path):
+    with open(path) as f:
+        return [row["spring"] for row in csv.DictReader(f)]
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("exe")
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--jobs", type=int, default=2)
+    a = ap.parse_args()
+    times = {"rk4": [], "exact": []}
+    with tempfile.TemporaryDirectory() as tmp:
+        for r in range(a.repeat):
+            outs = {}
+            for solver in ("rk4", "exact"):
+                outs[solver] = os.path.join(tmp, f"{solver}.csv")
+                times[solver].append(sweep(a.exe, solver, a.jobs, outs[solver]))
+            same = springs(outs["rk4"]) == springs(outs["exact"])
+            print(f"repetition {r + 1}: rk4 {times['rk4'][-1]:.3f} s, exact "
+                  f"{times['exact'][-1]:.3f} s, same first springs: {same}")
+            if not same:
+                print("sweep_bench: rk4 and exact disagree on a first-breaking spring",
+                      file=sys.stderr)
+    m = {k: statistics.median(v) for k, v in times.items()}
+    print(f"CHAINBREAK_SIMD={os.environ.get('CHAINBREAK_SIMD', 'auto')} jobs={a.jobs}: "
+          f"median rk4 {m['rk4']:.3f} s, exact {m['exact']:.3f} s, "
+          f"rk4/exact {m['rk4'] / m['exact']:.2f}")
+
+
+if __name__ == "__main__":
+    main()

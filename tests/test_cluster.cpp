@@ -1,0 +1,192 @@
+// The cluster library without a cluster: grid numbering, shard blocks, records, coverage,
+// the array spec and what is read from Slurm's output.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <map>
+
+#include "cluster/grid.h"
+#include "cluster/merge.h"
+#include "cluster/shard.h"
+#include "cluster/shard_record.h"
+#include "cluster/slurm.h"
+
+using namespace cb;
+
+TEST_CASE("A grid numbers its points with the first axis slowest", "[cluster]") {
+  Grid g;
+  add_axis(g, parse_vary("drive.beta=1:3:3"));
+  add_axis(g, parse_values("chain.gamma=0.5,0.25"));
+  REQUIRE(g.size() == 6);
+  // Oracle: the nested loops a user would write, outer loop = first --vary.
+  std::size_t i = 0;
+  for (double b : {1.0, 2.0, 3.0})
+    for (double c : {0.5, 0.25}) CHECK(g.point(i++) == std::vector<double>{b, c});
+  CHECK(g.csv_header() == "drive.beta,chain.gamma,spring,tau");
+  Grid one;
+  add_axis(one, parse_values("chain.gamma=0.5"));
+  CHECK(one.csv_header() == "value,spring,tau");  // the historical one-key header
+}
+
+TEST_CASE("A --vary axis spaces values linearly or geometrically, ending on HI exactly", "[cluster]") {
+  const auto lin = parse_vary("chain.threshold=5:200:13");
+  REQUIRE(lin.values.size() == 13);
+  CHECK(lin.values.front() == 5);
+  CHECK(lin.values.back() == 200);
+  CHECK(lin.values[4] == Approx(5 + 4 * 195.0 / 12).epsilon(1e-15));
+  const auto lg = parse_vary("drive.beta=0.001:10:5:log");  // decades: 1e-3, 1e-2, ..., 10
+  REQUIRE(lg.values.size() == 5);
+  for (int k = 0; k < 5; ++k) CHECK(lg.values[k] == Approx(std::pow(10.0, k - 3)).epsilon(1e-14));
+  CHECK(lg.values.front() == 0.001);  // the ends exactly as typed, not exp(log(0.001))
+  CHECK(lg.values.back() == 10);
+  CHECK(parse_vary("chain.gamma=0.3:0.9:1").values == std::vector<double>{0.3});
+}
+
+TEST_CASE("Bad grid specs say how to fix them", "[cluster]") {
+  CHECK_THROWS_WITH(parse_vary("chain.threshold=1:300:0"), Catch::Contains("at least 1"));
+  CHECK_THROWS_WITH(parse_vary("drive.beta=0:1:5:log"), Catch::Contains("above zero"));
+  CHECK_THROWS_WITH(parse_vary("drive.beta=1:5"), Catch::Contains("KEY=LO:HI:COUNT"));
+  CHECK_THROWS_WITH(parse_values("drive.beta=1,x"), Catch::Contains("'x' is not a number"));
+  Grid g;
+  add_axis(g, parse_vary("drive.beta=1:2:2"));
+  CHECK_THROWS_WITH(add_axis(g, parse_values("drive.beta=3")),
+                    Catch::Contains("already varied by --vary drive.beta=1:2:2"));
+  add_axis(g, parse_vary("chain.gamma=0:1:1000000"));
+  CHECK_THROWS_AS(check_grid_size(g, 1000000), GridError);
+  CHECK_NOTHROW(check_grid_size(g, 2000000));
+}
+
+TEST_CASE("Shards are contiguous balanced blocks that cover every point once", "[cluster]") {
+  for (std::size_t n = 1; n <= 40; ++n)
+    for (std::size_t s = 1; s <= n; ++s) {
+      std::size_t next = 0, smallest = n, largest = 0;
+      for (std::size_t i = 1; i <= s; ++i) {
+        const auto r = shard_points(n, {i, s});
+        REQUIRE(r.first == next);  // contiguous, in order
+        next = r.last;
+        smallest = std::min(smallest, r.size());
+        largest = std::max(largest, r.size());
+        for (std::size_t p = r.first; p < r.last; ++p) REQUIRE(shard_of_point(n, s, p) == i);
+      }
+      REQUIRE(next == n);
+      REQUIRE(largest - smallest <= 1);
+    }
+}
+
+TEST_CASE("Slurm array variables (--shard slurm) map a contiguous array onto shards 1..S", "[cluster]") {
+  std::map<std::string, std::string> env = {
+      {"SLURM_ARRAY_TASK_ID", "5"}, {"SLURM_ARRAY_TASK_MIN", "4"}, {"SLURM_ARRAY_TASK_COUNT", "3"}};
+  auto get = [&](const char* k) -> const char* {
+    const auto it = env.find(k);
+    return it == env.end() ? nullptr : it->second.c_str();
+  };
+  const Shard s = shard_from_slurm(get);
+  CHECK(s.index == 2);
+  CHECK(s.count == 3);
+  env.erase("SLURM_ARRAY_TASK_MIN");
+  CHECK_THROWS_WITH(shard_from_slurm(get), Catch::Contains("SLURM_ARRAY_TASK_MIN is not set"));
+  env["SLURM_ARRAY_TASK_MIN"] = "7";
+  CHECK_THROWS_WITH(shard_from_slurm(get), Catch::Contains("contiguous array"));
+  CHECK(shard_stem({3, 8}) == "shard-0003-of-0008");
+  CHECK(parse_shard("2/8").index == 2);
+  CHECK_THROWS_AS(parse_shard("9/8"), GridError);
+  CHECK_THROWS_AS(parse_shard("0/8"), GridError);
+}
+
+TEST_CASE("A record reads back as written", "[cluster]") {
+  ShardRecord r;
+  r.version = "0.1";
+  r.scene = "a.toml";
+  r.scene_hash = "0123456789abcdef";
+  r.solver = "rk4";
+  add_axis(r.grid, parse_vary("drive.beta=0.1:0.3:3"));
+  add_axis(r.grid, parse_values("chain.gamma=0,0.01"));
+  r.header = r.grid.csv_header();
+  r.shard = {2, 3};
+  r.points = shard_points(r.grid.size(), r.shard);
+  r.wall_seconds = 1.25;
+  r.peak_memory_kib = 4096;
+  r.host = "node1";
+  r.command = {"sweep", "a b.toml"};
+  const ShardRecord back = parse_record(record_json(r));
+  CHECK(record_mismatch(r, back).empty());
+  CHECK(back.grid.axes[0].values == r.grid.axes[0].values);  // doubles round-trip exactly
+  CHECK(back.points.first == 2);
+  CHECK(back.points.last == 4);
+  CHECK(back.command == r.command);
+  ShardRecord other = back;
+  other.grid.axes[1].values[1] = 0.02;
+  CHECK_THAT(record_mismatch(r, other), Catch::Contains("chain.gamma"));
+  CHECK(record_path("/x/shard-0001-of-0002.csv") == "/x/shard-0001-of-0002.json");
+  CHECK_THROWS(parse_record("{\"scene\": 1}"));
+}
+
+TEST_CASE("Coverage finds missing and duplicated points", "[cluster]") {
+  ShardRecord base;
+  base.scene_hash = "h";
+  base.solver = "exact";
+  add_axis(base.grid, parse_vary("chain.threshold=1:10:10"));
+  base.header = base.grid.csv_header();
+  auto shard = [&](std::size_t i, std::size_t s) {
+    ShardFile f;
+    f.csv_path = shard_stem({i, s}) + ".csv";
+    f.record = base;
+    f.record.shard = {i, s};
+    f.record.points = shard_points(10, f.record.shard);
+    for (std::size_t p = f.record.points.first; p < f.record.points.last; ++p)
+      f.rows.push_back(std::to_string(p + 1) + ",1,2");
+    return f;
+  };
+  const Coverage full = check_coverage({shard(1, 3), shard(2, 3), shard(3, 3)});
+  CHECK(full.complete());
+  CHECK(
+      merged_csv({shard(3, 3), shard(1, 3), shard(2, 3)}) ==
+      "value,spring,tau\n1,1,2\n2,1,2\n3,1,2\n4,1,2\n5,1,2\n6,1,2\n7,1,2\n8,1,2\n9,1,2\n10,1,2\n");
+  const Coverage gap = check_coverage({shard(1, 3), shard(3, 3)});  // shard 2: points 3..5
+  CHECK(gap.missing == std::vector<std::size_t>{3, 4, 5});
+  CHECK(index_ranges(gap.missing) == "3-5");
+  CHECK(shards_holding(10, 3, gap.missing) == std::vector<std::size_t>{2});
+  const Coverage dup = check_coverage({shard(1, 2), shard(2, 2), shard(1, 3)});  // 0..2 twice
+  REQUIRE(dup.duplicated.size() == 3);
+  CHECK(dup.duplicated[0].first == 0);
+  CHECK(dup.missing.empty());
+  auto foreign = shard(2, 3);
+  foreign.record.scene_hash = "other";
+  CHECK_THROWS_AS(check_coverage({shard(1, 3), foreign}), MergeError);
+  CHECK(index_ranges({0, 1, 2, 5, 7, 8}) == "0-2,5,7-8");
+}
+
+TEST_CASE("Slurm's answers are read and the array spec is written as sbatch wants", "[cluster]") {
+  CHECK(max_array_size("MaxArraySize            = 40\nMaxJobCount = 10000\n") == 40);
+  CHECK(max_array_size("MaxJobCount = 10000\n") == 1001);  // Slurm's documented default
+  CHECK(parsable_job_id("1234\n") == "1234");
+  CHECK(parsable_job_id("1234;cluster\n") == "1234");
+  CHECK(parsable_job_id("sbatch: error\n").empty());
+  CHECK(array_spec({1, 2, 3, 4}, 0) == "0-3");  // task id = shard - 1
+  CHECK(array_spec({2, 5, 6}, 2) == "1,4-5%2");
+  CHECK(throttle_from_array_arg("--array=0-3%2", "0-3") == 2);
+  CHECK(throttle_from_array_arg("--array=%3", "0-3") == 3);
+  CHECK(throttle_from_array_arg("--partition=x", "0-3") == 0);
+  CHECK_THROWS_WITH(throttle_from_array_arg("--array=0-9", "0-3"),
+                    Catch::Contains("--max-running"));
+  CHECK(shell_command({"a", "b c", "it's"}) == "a 'b c' 'it'\\''s'");
+}
+
+TEST_CASE("The sbatch script runs shard task+1 of S into the shards folder", "[cluster]") {
+  SbatchJob job;
+  job.job_name = "chainbreak-map";
+  job.shards = 8;
+  job.sweep = {"/usr/bin/chainbreak", "sweep", "/s/a b.toml", "--vary", "drive.beta=1:2:3"};
+  job.shards_dir = "/out/map.csv.shards";
+  job.merge_command = "chainbreak merge --csv /out/map.csv /out/map.csv.shards";
+  job.sbatch_args = {"--partition=short"};
+  job.max_running = 3;
+  const std::string s = sbatch_script(job);
+  CHECK(s.rfind("#!/bin/bash\n", 0) == 0);
+  CHECK_THAT(s, Catch::Contains("#SBATCH --array=0-7%3\n"));
+  CHECK_THAT(s, Catch::Contains("#SBATCH --partition=short\n"));
+  CHECK_THAT(s, Catch::Contains("#SBATCH --output=/out/map.csv.shards/slurm-%A_%a.out\n"));
+  CHECK_THAT(s, Catch::Contains("shard=$((SLURM_ARRAY_TASK_ID + 1))"));
+  CHECK_THAT(s, Catch::Contains("'/s/a b.toml'"));
+  CHECK_THAT(s, Catch::Contains("--shard \"$shard/8\" --csv /out/map.csv.shards/\"$name\""));
+  CHECK_THAT(s, Catch::Contains("printf -v name 'shard-%04d-of-0008.csv' \"$shard\""));
+}

@@ -1,0 +1,259 @@
+// Issue #12 (part A): validate() on in-memory scenes, set_scene_number, the resource guards
+// (memory against MemAvailable and the cgroup, frames, sweep counts, table files) and the
+// hostile inputs of the issue's table, each run as a user would.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "resources/resources.h"
+#include "scene/scene.h"
+#include "scene_test_support.h"
+#include "test_support.h"
+
+using Catch::Matchers::Contains;
+using cb::test::run_chainbreak;
+
+namespace {
+
+std::string scene_file(const std::string& name) {
+  return std::string(CHAINBREAK_SCENES) + "/" + name;
+}
+
+std::string validate_error(const cb::SceneDesc& scene) {
+  try {
+    cb::validate(scene);
+  } catch (const cb::SceneError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+// A valid scene built in memory, as the viewer or the Python module would.
+cb::SceneDesc memory_scene() {
+  cb::SceneDesc s;
+  s.chain.beads = 30;
+  s.drive.type = cb::DriveType::Ramp;
+  s.drive.beta = 0.02;
+  s.integrator.t_end = 100;
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("validate: an in-memory scene is held to the file's rules, messages start at the key",
+          "[hardening]") {
+  cb::SceneDesc s = memory_scene();
+  CHECK(validate_error(s) == "(no error)");
+  s.chain.threshold = 0;
+  CHECK(validate_error(s) ==
+        "chain.threshold must be > 0, got 0; write e.g. threshold = 1.0, or remove it for an "
+        "unbreakable chain");
+  s = memory_scene();
+  s.chain.gamma = std::nan("");  // only code can do this; a file's NaN is refused when read
+  CHECK_THAT(validate_error(s), Contains("chain.gamma must be a finite number, got nan"));
+  s = memory_scene();
+  s.integrator.dt = 5;  // RK4's limit for N = 30, gamma = 0 is 2 sqrt(2) / 2 cos(pi/61)...
+  CHECK_THAT(validate_error(s), Contains("integrator.dt = 5 is beyond RK4's stability limit"));
+  s = memory_scene();
+  s.drive.type = cb::DriveType::Table;
+  s.drive.table = {{0, 0}, {5, 1}, {5, 2}};
+  CHECK(validate_error(s) ==
+        "drive.points: tau must increase from pair to pair (pair 3 has "
+        "tau = 5)");
+  s = memory_scene();
+  s.render.view = "sideways";
+  CHECK_THAT(validate_error(s), Contains("unknown render.view 'sideways'"));
+  s = memory_scene();
+  s.drive.type = cb::DriveType::Expr;
+  s.drive.expr = "0.02*t +";
+  CHECK_THAT(validate_error(s), Contains("drive.expr \"0.02*t +\""));
+}
+
+TEST_CASE("validate: a scene read from a file names the file and line, or the --set",
+          "[hardening]") {
+  using cb::scene_test::kBase;
+  cb::SceneDesc s = cb::parse_scene(kBase, "t.toml");
+  REQUIRE(s.origins.at("chain.gamma") == "t.toml:3:9");
+  s.chain.gamma = -1;
+  CHECK_THAT(validate_error(s), Contains("t.toml:3:9: chain.gamma must be >= 0"));
+  s = cb::parse_scene(kBase, "t.toml", {{"chain.gamma", "0.5"}});
+  s.chain.gamma = -1;
+  CHECK_THAT(validate_error(s), Contains("--set chain.gamma=0.5: chain.gamma must be >= 0"));
+  // A key left at its default points at its section.
+  s = cb::parse_scene(kBase, "t.toml");
+  s.render.fps = 1000;
+  CHECK_THAT(validate_error(s), Contains("t.toml:1:1: render.fps = 1000 is above 240"));
+}
+
+TEST_CASE("row 12: gamma = 200 without dt names the default dt and says to set dt", "[hardening]") {
+  // Before the fix the message read an empty std::optional (*dt): "integrator.dt = 4.66e-310".
+  const std::string e = cb::scene_test::error_of(cb::scene_test::with(
+      "dt = 0.01\n", "\n", cb::scene_test::with("gamma = 0.0", "gamma = 200")));
+  CHECK_THAT(e, Contains("t.toml:7:1: integrator.dt is not set, and its default dt = 0.01 (in "
+                         "tau) is beyond RK4's stability limit"));
+  CHECK_THAT(e, Contains("gamma = 200; set dt in [integrator], at most "));
+  // With SI input the default is still in tau, and its seconds are given.
+  const std::string si = cb::scene_test::error_of(
+      cb::scene_test::kUnits +
+      cb::scene_test::with("dt = 0.01\n", "\n",
+                           cb::scene_test::with("gamma = 0.0", "gamma = 200")));
+  CHECK_THAT(si, Contains("default dt = 0.01 (in tau, 0.0001581 s)"));
+}
+
+TEST_CASE("set_scene_number converts the scene's units and validates", "[hardening]") {
+  using namespace cb::scene_test;
+  cb::SceneDesc s = parse_scene(kUnits + kBase, "t.toml");
+  // Seconds to tau: tau = omega0 t (Eq. (dimless)).
+  REQUIRE(cb::set_scene_number(s, "integrator.t_end", 2.0, "--vary x"));
+  CHECK(s.integrator.t_end == Approx(2.0 * kOmega0).epsilon(1e-15));
+  REQUIRE(cb::set_scene_number(s, "chain.beads", 12, "--vary x"));
+  CHECK(s.chain.beads == 12);
+  CHECK_THROWS_WITH(cb::set_scene_number(s, "chain.beads", 12.5, "--vary y"),
+                    Contains("--vary y: chain.beads must be an integer"));
+  CHECK_THROWS_WITH(cb::set_scene_number(s, "chain.gamma", -1, "--vary z"),
+                    Contains("--vary z: chain.gamma must be >= 0"));
+  CHECK(s.chain.gamma == 0.0);  // a refused value changes nothing
+  // [units] keys change how every number is read: the caller re-reads the text.
+  CHECK_FALSE(cb::set_scene_number(s, "units.mass", 1.0, "--vary m"));
+}
+
+TEST_CASE("SceneVariations matches parsing the file with the value as an override", "[hardening]") {
+  const std::string path = scene_file("units_example.toml");
+  const cb::SceneVariations v(path, {});
+  for (const char* key : {"chain.threshold", "drive.beta", "integrator.t_end", "units.mass"}) {
+    INFO(key);
+    const cb::SceneDesc base = cb::load_scene(path);
+    const double value = 0.5;
+    const cb::SceneDesc in_memory = v.with(key, value, "--vary");
+    const cb::SceneDesc parsed = cb::load_scene(path, {{key, "0.5"}});
+    CHECK(in_memory.chain.threshold == Approx(parsed.chain.threshold).epsilon(1e-14));
+    CHECK(in_memory.drive.beta == Approx(parsed.drive.beta).epsilon(1e-14));
+    CHECK(in_memory.integrator.t_end == Approx(parsed.integrator.t_end).epsilon(1e-14));
+    CHECK(in_memory.units->mass == parsed.units->mass);
+    (void)base;
+  }
+}
+
+TEST_CASE("machine memory: MemAvailable, or the cgroup's limit when lower", "[hardening]") {
+  const std::string meminfo = "MemTotal:       24000000 kB\nMemAvailable:   20000000 kB\n";
+  auto m = cb::machine_memory_from(meminfo, "", "", "", "");
+  CHECK(m.available_bytes == 20000000.0 * 1024);
+  CHECK(m.source == "MemAvailable");
+  m = cb::machine_memory_from(meminfo, "max\n", "1000\n", "", "");  // v2 without a limit
+  CHECK(m.source == "MemAvailable");
+  m = cb::machine_memory_from(meminfo, "4294967296\n", "1073741824\n", "", "");
+  CHECK(m.available_bytes == 3221225472.0);  // 4 GiB limit - 1 GiB in use
+  CHECK(m.source == "cgroup v2 memory.max");
+  m = cb::machine_memory_from(meminfo, "", "", "9223372036854771712\n", "5\n");  // v1 "no limit"
+  CHECK(m.source == "MemAvailable");
+  m = cb::machine_memory_from(meminfo, "", "", "2000000000\n", "500000000\n");
+  CHECK(m.available_bytes == 1.5e9);
+  CHECK(m.source == "cgroup v1 memory.limit_in_bytes");
+}
+
+TEST_CASE("require_memory states the estimate, the limit and the fix", "[hardening]") {
+  cb::MachineMemory machine{10e9, "MemAvailable"};
+  cb::MemoryEstimate e;
+  e.needs = {{"RK4 state", 7e9}, {"CSV buffer", 0.5e9}};
+  CHECK_NOTHROW(cb::require_memory(e, machine, "run x", "fix"));  // 7.5 GB <= 80 % of 10 GB
+  e.needs.push_back({"exact tables", 1e9});
+  CHECK_THROWS_WITH(cb::require_memory(e, machine, "run x", "use fewer beads"),
+                    "run x: needs about 8.5 GB of memory (RK4 state 7 GB, exact tables 1 GB, CSV "
+                    "buffer 500 MB), more than the limit of 8 GB (80 % of the 10 GB available, "
+                    "MemAvailable); use fewer beads");
+}
+
+TEST_CASE("rows 1-2: a billion beads is refused at once with the memory it needs",
+          "[hardening][cli]") {
+  cb::test::TempDir dir;
+  for (const char* beads : {"1000000000", "2147483647"}) {
+    const auto r = run_chainbreak("run " + scene_file("anomalous_breaking.toml") +
+                                  " --set chain.beads=" + beads + " --csv " + dir.file("x.csv"));
+    INFO(r.err);
+    CHECK(r.status == 2);
+    CHECK_THAT(r.err, Contains("of memory (") && Contains("available, ") &&
+                          Contains("use fewer beads (chain.beads)"));
+  }
+  CHECK(dir.names().empty());
+}
+
+TEST_CASE("run --dry-run prints the estimate and writes nothing", "[hardening][cli]") {
+  cb::test::TempDir dir;
+  const auto r = run_chainbreak("run " + scene_file("anomalous_breaking.toml") +
+                                " --set chain.beads=1000 --every 10 --psi --dry-run --csv " +
+                                dir.file("x.csv"));
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  // t_end / dt = 400 / 0.01 steps, a row every 10: 4001 rows of 5 + 2 N numbers.
+  CHECK(j["steps"] == 40000);
+  CHECK(j["csv_rows"] == 4001);
+  CHECK(j["csv_bytes"] == 4001.0 * 25 * 2005);
+  CHECK(j["memory"]["parts"]["RK4 state"] == 40 * 1000);
+  CHECK(j["memory_available_bytes"].get<double>() > 0);
+  CHECK(dir.names().empty());
+}
+
+TEST_CASE("row 3: a table drive from /dev/zero or an oversized file is refused", "[hardening]") {
+  using namespace cb::scene_test;
+  const std::string scene =
+      "[chain]\nbeads = 4\n[drive]\ntype = \"table\"\nfile = \"F\"\n"
+      "[integrator]\nt_end = 10\n";
+  CHECK_THAT(error_of(with("F", "/dev/zero", scene)),
+             Contains("t.toml:5:8: cannot use drive.file = \"/dev/zero\": /dev/zero: not a regular "
+                      "file"));
+  TempDir dir;
+  const std::string big = dir.write("big.csv", "0,0\n");
+  std::filesystem::resize_file(big, cb::kMaxDriveTableBytes + 1);  // sparse: no disk used
+  CHECK_THAT(error_of(with("F", big, scene)),
+             Contains("bytes is more than the limit of 67108864 bytes (64 MiB) for a drive table"));
+}
+
+TEST_CASE("row 4: a sweep count past the limit is refused, not overflowed", "[hardening][cli]") {
+  cb::test::TempDir dir;
+  const auto r =
+      run_chainbreak("sweep " + scene_file("anomalous_breaking.toml") +
+                     " --vary drive.amplitude=0:1:1000000000000 --csv " + dir.file("s.csv"));
+  CHECK(r.status == 2);
+  CHECK_THAT(r.err, Contains("COUNT = 1000000000000 values is more than the limit of 1000000"));
+  CHECK(dir.names().empty());
+}
+
+TEST_CASE("sweep values are checked in memory with the --vary named", "[hardening][cli]") {
+  cb::test::TempDir dir;
+  const auto bad = run_chainbreak("sweep " + scene_file("anomalous_breaking.toml") +
+                                  " --vary chain.gamma=-1:1:3 --csv " + dir.file("s.csv"));
+  CHECK(bad.status == 2);
+  CHECK_THAT(bad.err, Contains("--vary chain.gamma=-1:1:3 (value -1): chain.gamma must be >= 0"));
+  CHECK(dir.names().empty());
+}
+
+TEST_CASE("rows 5-6: render --speed 1e-300 and 1e-6 are refused before planning",
+          "[hardening][cli]") {
+  for (const char* speed : {"1e-300", "1e-6"}) {
+    const auto r = run_chainbreak("render " + scene_file("anomalous_breaking.toml") +
+                                  " --dry-run --speed " + speed);
+    INFO(r.err);
+    CHECK(r.status == 2);
+    CHECK_THAT(r.err, Contains("frames (t_end = 400 at ") &&
+                          Contains("is more than the limit of 1e+06 frames; raise --speed"));
+  }
+}
+
+TEST_CASE("row 10: a misspelled CHAINBREAK_GL is a user error (status 2)", "[hardening][cli]") {
+  const auto r =
+      cb::test::run_shell("CHAINBREAK_GL=nonsense " + std::string(CHAINBREAK_EXE) + " render " +
+                          scene_file("anomalous_breaking.toml") + " --dry-run");
+  CHECK(r.status == 2);
+  CHECK_THAT(r.err, Contains("CHAINBREAK_GL=\"nonsense\": expected auto, osmesa or egl"));
+}
+
+TEST_CASE("row 11: run --every 0 gives a human range", "[hardening][cli]") {
+  const auto r = run_chainbreak("run " + scene_file("anomalous_breaking.toml") + " --every 0");
+  CHECK(r.status == 2);
+  CHECK_THAT(r.err, Contains("--every: expected a whole number K >= 1"));
+  CHECK_THAT(r.err, !Contains("179769313486231570"));
+}

@@ -1,0 +1,219 @@
+// The kernel's instruction sets (physics/simd.h): every path the CPU supports gives the same
+// bytes as the SSE2 baseline, and CHAINBREAK_SIMD values are checked.
+#include <catch2/catch.hpp>
+#include <cstring>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "drive/drive.h"
+#include "physics/integrator.h"
+#include "physics/run_loop.h"
+#include "physics/simd.h"
+#include "test_support.h"
+
+namespace {
+
+// The bytes of everything a run leaves behind: state, energy books, breaks.
+std::vector<unsigned char> state_bytes(const cb::ChainState& s) {
+  std::vector<unsigned char> out;
+  auto add = [&](const void* p, std::size_t n) {
+    const auto* c = static_cast<const unsigned char*>(p);
+    out.insert(out.end(), c, c + n);
+  };
+  add(s.psi.data(), s.psi.size() * sizeof(double));
+  add(s.vel.data(), s.vel.size() * sizeof(double));
+  add(s.broken.data(), s.broken.size() * sizeof(int));
+  for (double v : {s.tau, s.work, s.dissipated, s.break_loss}) add(&v, sizeof v);
+  for (const auto& b : s.breaks) {
+    add(&b.spring, sizeof b.spring);
+    add(&b.tau, sizeof b.tau);
+    add(&b.step, sizeof b.step);
+  }
+  return out;
+}
+
+struct Scene {
+  const char* name;
+  cb::ChainParams chain;
+  cb::DriveDesc drive;
+  double dt;
+  std::int64_t steps;
+  int threads;
+};
+
+std::vector<Scene> scenes() {
+  std::vector<Scene> out;
+  // The paper's N = 30 ramp with breaking: several springs go, so broken springs, the wall
+  // and bead N all take the general stencil in the kernel.
+  Scene ramp{"ramp N=30 breaking", {}, {}, 0.01, 20000, 1};
+  ramp.chain.beads = 30;
+  ramp.chain.threshold = 1.0;
+  ramp.drive.type = cb::DriveType::Ramp;
+  ramp.drive.beta = 0.05;
+  out.push_back(ramp);
+  // Friction, a sine drive and a length that is no multiple of any vector width or tile.
+  Scene sine{"sine N=2053 gamma", {}, {}, 0.02, 3000, 1};
+  sine.chain.beads = 2053;
+  sine.chain.gamma = 0.05;
+  sine.chain.threshold = 0.9;
+  sine.drive.type = cb::DriveType::Sine;
+  sine.drive.amplitude = 0.3;
+  sine.drive.period = 4.7;
+  out.push_back(sine);
+  // Two workers (N >= 20000 per thread), breaking in the stretch-only mode.
+  Scene big{"step N=50001 2 threads", {}, {}, 0.05, 400, 2};
+  big.chain.beads = 50001;
+  big.chain.threshold = 0.6;
+  big.chain.break_on = cb::BreakMode::Stretch;
+  big.drive.type = cb::DriveType::Step;
+  big.drive.amplitude = 0.8;
+  out.push_back(big);
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("every SIMD path the CPU supports gives the same bytes as SSE2", "[simd]") {
+  for (const Scene& sc : scenes()) {
+    SECTION(sc.name) {
+      auto run = [&](cb::SimdPath path) {
+        cb::IntegratorOptions o{sc.dt, sc.threads, path};
+        cb::Integrator sim(sc.chain, cb::make_forcing(sc.drive), o);
+        REQUIRE(sim.simd() == path);
+        REQUIRE(cb::run_until(sim, {sc.steps, std::nullopt, false, nullptr}) ==
+                cb::RunEnd::Reached);
+        return sim.state();
+      };
+      const cb::ChainState base = run(cb::SimdPath::Sse2);
+      CHECK(base.step == sc.steps);
+      for (cb::SimdPath p : {cb::SimdPath::Avx2, cb::SimdPath::Avx512}) {
+        if (!cb::simd_supported(p)) {
+          WARN("this CPU has no " << cb::simd_name(p) << ": path not checked");
+          continue;
+        }
+        INFO(cb::simd_name(p));
+        const cb::ChainState s = run(p);
+        CHECK(s.breaks.size() == base.breaks.size());
+        CHECK(state_bytes(s) == state_bytes(base));
+      }
+    }
+  }
+}
+
+TEST_CASE("CHAINBREAK_SIMD values: auto is the widest, a missing ISA or a typo is an error",
+          "[simd]") {
+  CHECK(cb::simd_from_setting(nullptr) == cb::widest_simd());
+  CHECK(cb::simd_from_setting("auto") == cb::widest_simd());
+  CHECK(cb::simd_from_setting("sse2") == cb::SimdPath::Sse2);
+  CHECK_THROWS_WITH(cb::simd_from_setting("avx3"),
+                    Catch::Contains("CHAINBREAK_SIMD=avx3") && Catch::Contains("avx512"));
+  for (cb::SimdPath p : {cb::SimdPath::Avx2, cb::SimdPath::Avx512}) {
+    if (cb::simd_supported(p))
+      CHECK(cb::simd_from_setting(cb::simd_name(p)) == p);
+    else
+      CHECK_THROWS_AS(cb::simd_from_setting(cb::simd_name(p)), cb::SimdChoiceError);
+  }
+}
+
+namespace {
+
+// FNV-1a over the bytes of a final state (psi, vel, broken springs, energy books, breaks).
+std::uint64_t state_hash(const cb::ChainState& s) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : state_bytes(s)) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+}  // namespace
+
+// The hashes were made by the integrator as it was before the SIMD paths, the run loop and the
+// small-chain changes (commit f8ecf44, compiled with the project's flags, same scenes): every
+// path must still give exactly those bytes. A change that moves one bit of one bead fails here;
+// if a change of the numerics is intended, regenerate them and say why in the commit.
+TEST_CASE("every SIMD path reproduces the bytes of the integrator before the SIMD work",
+          "[simd][determinism]") {
+  struct Case {
+    const char* name;
+    int beads;
+    double gamma, threshold;
+    cb::BreakMode mode;
+    bool pull_string;
+    cb::DriveType drive;
+    double amplitude, beta, dt;
+    std::int64_t steps;
+    int threads;
+    std::uint64_t hash;
+  };
+  using cb::BreakMode;
+  using cb::DriveType;
+  const Case cases[] = {
+      {"anomalous N=30", 30, 0.0, 3.0, BreakMode::Abs, false, DriveType::Ramp, 1, 0.02, 0.01, 40000,
+       1, 0xec756ac9285742f7ull},
+      {"ramp N=30, 6 breaks", 30, 0.0, 1.0, BreakMode::Abs, false, DriveType::Ramp, 1, 0.05, 0.01,
+       20000, 1, 0x1b729f94dd153ac8ull},
+      {"N=1000 friction", 1000, 0.1, 1e300, BreakMode::Abs, false, DriveType::Ramp, 1, 0.01, 0.01,
+       30000, 1, 0x1865b77b65d9fad8ull},
+      {"N=50001 step, 2 threads", 50001, 0.0, 0.6, BreakMode::Stretch, false, DriveType::Step, 0.8,
+       1, 0.05, 600, 2, 0x6fcf3bfe5ac1e747ull},
+      {"one body, pull string", 1, 0.0, 1.0, BreakMode::Abs, true, DriveType::Ramp, 1, 0.3, 0.01,
+       2000, 1, 0x0f34d36321c218bfull},
+      {"N=40 kicks", 40, 0.02, 0.8, BreakMode::Abs, false, DriveType::Impulses, 1, 1, 0.01, 8000, 1,
+       0xe07e5919c14e7606ull},
+  };
+  for (const Case& c : cases) {
+    cb::ChainParams p;
+    p.beads = c.beads;
+    p.gamma = c.gamma;
+    p.threshold = c.threshold;
+    p.break_on = c.mode;
+    p.pull_string = c.pull_string;
+    cb::DriveDesc d;
+    d.type = c.drive;
+    d.amplitude = c.amplitude;
+    d.beta = c.beta;
+    if (c.drive == DriveType::Impulses) {
+      d.times = {0.5, 3.25, 7.125};
+      d.strengths = {0.7, -0.4, 0.9};
+    }
+    for (cb::SimdPath path : {cb::SimdPath::Sse2, cb::SimdPath::Avx2, cb::SimdPath::Avx512}) {
+      if (!cb::simd_supported(path)) continue;
+      INFO(c.name << ", " << cb::simd_name(path));
+      cb::Integrator sim(p, cb::make_forcing(d), {c.dt, c.threads, path});
+      REQUIRE(sim.advance_to(c.steps));
+      CHECK(state_hash(sim.state()) == c.hash);
+    }
+  }
+}
+
+TEST_CASE("run names the path in its JSON, same numbers on each; a bad CHAINBREAK_SIMD exits 2",
+          "[simd][cli]") {
+  const std::string scene = std::string(CHAINBREAK_SCENES) + "/anomalous_breaking.toml";
+  const std::string exe = CHAINBREAK_EXE;
+  nlohmann::json first;
+  for (cb::SimdPath path : {cb::SimdPath::Sse2, cb::SimdPath::Avx2, cb::SimdPath::Avx512}) {
+    if (!cb::simd_supported(path)) continue;
+    const auto r = cb::test::run_shell(std::string("CHAINBREAK_SIMD=") + cb::simd_name(path) + " " +
+                                       exe + " run " + scene + " --quiet");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    auto summary = nlohmann::json::parse(r.out);
+    CHECK(summary["simd"] == cb::simd_name(path));
+    summary.erase("simd");
+    if (first.is_null()) first = summary;
+    CHECK(summary == first);  // breaks, tau to the last digit printed, energy books
+  }
+  REQUIRE_FALSE(first.is_null());
+  CHECK(first["breaks"].size() >= 1);
+
+  const auto csv = std::filesystem::temp_directory_path() / "chainbreak_simd_refused.csv";
+  std::filesystem::remove(csv);
+  const auto bad = cb::test::run_shell("CHAINBREAK_SIMD=avx3 " + exe + " run " + scene +
+                                       " --quiet --csv " + csv.string());
+  CHECK(bad.status == 2);
+  CHECK_THAT(bad.err, Catch::Contains("CHAINBREAK_SIMD=avx3") &&
+                          Catch::Contains("expected auto, sse2, avx2 or avx512"));
+  CHECK_FALSE(std::filesystem::exists(csv));
+}
