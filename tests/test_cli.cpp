@@ -133,6 +133,20 @@ TEST_CASE("sweep rejects a malformed --vary with a usage hint", "[cli]") {
   CHECK_THAT(r.err, Catch::Contains("KEY=LO:HI:COUNT"));
 }
 
+TEST_CASE("a sweep whose values fail while the progress bar runs reports the failure", "[cli]") {
+  // Issue #12 row 13: the progress watcher read the failure text without the workers' lock.
+  // Every value's force turns infinite at tau = 40, after the watcher has looked a few
+  // times; the ThreadSanitizer build (tests/ci/sanitizers.sh tsan) runs this test.
+  const fs::path csv = temp_dir() / "failing.csv";
+  const auto r = chainbreak("sweep " + scene("expr_drive.toml") +
+                            " --set 'drive.expr=t > 40 ? 1e308*1e308 : 0' --set integrator.t_end=60"
+                            " --vary chain.gamma=0:0.1:4 --jobs 2 --csv " +
+                            csv.string());
+  CHECK(r.status == 1);
+  CHECK_THAT(r.err, Catch::Contains("expr_drive"));
+  CHECK_FALSE(fs::exists(csv));
+}
+
 TEST_CASE("SIGINT stops a run with status 130 and no CSV", "[cli]") {
   const fs::path csv = temp_dir() / "interrupted.csv";
   const pid_t pid = ::fork();

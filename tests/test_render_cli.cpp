@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "gl_test_support.h"
+#include "output/output_lock.h"
 #include "output/png_writer.h"
 #include "test_support.h"
 #include "video_probe.h"
@@ -397,6 +398,41 @@ TEST_CASE("render: Ctrl-C exits 130 and keeps a playable .partial.mp4", "[render
   // Every frame drawn was kept, and the message says how many.
   CHECK_THAT(message, Catch::Contains("interrupted after " + std::to_string(d.frames) + " frames"));
   CHECK(d.duration == Approx(d.frames / 15.0).margin(1e-9));
+}
+
+TEST_CASE("render: two renders to one output leave a video and a sidecar of one run",
+          "[render_cli]") {
+  // Issue #12 row 9: both used to exit 0, the video of one and the sidecar of the other.
+  if (!gl_available()) return;
+  TempDir dir;
+  const std::string mp4 = dir.file("clip.mp4");
+  const std::string args = " --fps 30 --speed 30 --quiet --set integrator.t_end=20 -o " + mp4;
+  {
+    // Another process holding the output: refused at once (exit 2), nothing written.
+    cb::OutputLock other(dir.file("clip.json"));
+    const auto r = chainbreak("render " + kBreaking + args + " --size 320x180");
+    CHECK(r.status == 2);
+    CHECK_THAT(r.err, Catch::Contains("clip.json: another chainbreak is writing this output"));
+    CHECK(dir.names() == std::vector<std::string>{".clip.json.lock"});
+  }
+  CHECK(dir.names().empty());  // the holder removes its lock file
+  // Two at once, of different sizes: one may be refused, and the pair left is one run's.
+  const std::string exe = CHAINBREAK_EXE;
+  const auto both = cb::test::run_shell(
+      "(" + exe + " render " + kBreaking + args + " --size 320x180 >/dev/null 2>&1; echo a$?) & (" +
+      exe + " render " + kBreaking + args + " --size 256x144 >/dev/null 2>&1; echo b$?) & wait");
+  INFO(both.out);
+  const bool a_ok = both.out.find("a0") != std::string::npos;
+  const bool b_ok = both.out.find("b0") != std::string::npos;
+  CHECK((a_ok || b_ok));
+  CHECK((a_ok || both.out.find("a2") != std::string::npos));
+  CHECK((b_ok || both.out.find("b2") != std::string::npos));
+  REQUIRE(dir.names() == std::vector<std::string>{"clip.json", "clip.mp4"});
+  const json side = read_json(dir.file("clip.json"));
+  const cb::test::Decoded video = cb::test::decode(mp4, -1);
+  CHECK(video.width == side["width"].get<int>());
+  CHECK(video.height == side["height"].get<int>());
+  CHECK(video.frames == side["frames"].get<int>());
 }
 
 TEST_CASE("render: bad outputs exit 2, name the path and create nothing", "[render_cli]") {

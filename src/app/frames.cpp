@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <tuple>
 
+#include "app/option_parsers.h"
 #include "interrupt/interrupt.h"
 #include "overlay/overlay_history.h"
 #include "physics/energy.h"
@@ -39,16 +41,7 @@ RenderDesc frame_settings(const SceneDesc& scene, const FrameOptions& o) {
     d.height = found->height;
     d.fps = found->fps;
   }
-  if (!o.size.empty()) {
-    int w = 0, h = 0;
-    char tail = 0;
-    if (std::sscanf(o.size.c_str(), "%dx%d%c", &w, &h, &tail) != 2 || w < kMinFrameSide ||
-        h < kMinFrameSide || w > kMaxFrameSide || h > kMaxFrameSide)
-      throw SceneError("--size " + o.size +
-                       ": expected WIDTHxHEIGHT in pixels, 16..16384, e.g. 1920x1080");
-    d.width = w;
-    d.height = h;
-  }
+  if (!o.size.empty()) std::tie(d.width, d.height) = parse_size(o.size);
   if (!o.view.empty()) {
     View v;
     if (!parse_view(o.view, v))

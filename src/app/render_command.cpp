@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <thread>
 
 #include "app/bounded_queue.h"
@@ -21,6 +22,7 @@
 #include "app/run_set.h"
 #include "output/frame_writer.h"
 #include "output/output_file.h"
+#include "output/output_lock.h"
 #include "output/video_encoder.h"
 #include "overlay/overlay.h"
 #include "resources/resources.h"
@@ -112,6 +114,10 @@ int render_scenes(std::vector<SceneDesc> scenes, const RenderOptions& o) {
   std::unique_ptr<FrameSink> sink;
   if (!(o.dry_run && default_folder && !std::filesystem::exists("renders")))
     sink = open_sink(o, scene, plan);
+  // One render at a time per output (issue #12, row 9): held until the sidecar is in place,
+  // so the video (or PNGs) and the JSON sidecar always come from the same run.
+  std::optional<OutputLock> lock;
+  if (!o.dry_run) lock.emplace(sidecar_path(scene, plan));
   runs.measure();
   if (o.dry_run) {
     std::string json = runs.json("");

@@ -219,5 +219,4 @@ std::string sidecar_path(const SceneDesc& scene, const RenderPlan& p) {
       .string();
 }
 
-
 }  // namespace cb

@@ -8,6 +8,7 @@
 #include "app/commands.h"
 #include "app/frame_source.h"
 #include "app/frames.h"
+#include "app/option_parsers.h"
 #include "app/zoom.h"
 #include "app/render_plan.h"
 #include "app/snapshot_images.h"
@@ -25,25 +26,6 @@ namespace {
 std::string done_text(std::size_t written) {
   return written == 0 ? std::string("nothing written")
                       : std::to_string(written) + " PNG(s) written before it are complete";
-}
-
-std::vector<double> parse_times(const std::string& text) {
-  std::vector<double> out;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    const auto end = std::min(text.find(',', start), text.size());
-    const std::string part = text.substr(start, end - start);
-    char* stop = nullptr;
-    const double t = std::strtod(part.c_str(), &stop);
-    if (part.empty() || *stop != '\0' || !(t >= 0.0) || !std::isfinite(t))
-      throw SceneError("--at " + text +
-                       ": expected times tau >= 0 separated by commas, e.g. --at 0,30,60.5");
-    out.push_back(t);
-    start = end + 1;
-  }
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
 }
 
 // "<scene>_tau_000123.450.png": zero-padded so that names sort by time.

@@ -13,6 +13,7 @@
 
 #include "app/commands.h"
 #include "app/csv.h"
+#include "app/option_parsers.h"
 #include "app/progress.h"
 #include "app/sweep_setup.h"
 #include "cluster/shard.h"
@@ -97,6 +98,7 @@ int sweep_command(const SweepOptions& o) {
   std::atomic<std::size_t> done{0};
   std::string failure;
   std::mutex failure_mutex;
+  std::atomic<bool> failed{false};  // what the watcher reads: `failure` is the workers'
   auto worker = [&] {
     for (std::size_t i; (i = next++) < scenes.size() && !g_interrupted;) {
       try {
@@ -104,6 +106,7 @@ int sweep_command(const SweepOptions& o) {
       } catch (const std::exception& e) {
         std::lock_guard lock(failure_mutex);
         if (failure.empty()) failure = e.what();
+        failed = true;
         next = scenes.size();
       }
       ++done;

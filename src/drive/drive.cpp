@@ -156,6 +156,11 @@ void load_drive_table(DriveDesc& drive, const std::string& path) {
   if (!in)
     throw DriveError(
         path + ": cannot read the drive table (check the path; it is relative to the scene file)");
+  drive.table = parse_drive_table(in, path);
+}
+
+std::vector<std::pair<double, double>> parse_drive_table(std::istream& in,
+                                                         const std::string& path) {
   std::vector<std::pair<double, double>> rows;
   std::string line;
   int line_no = 0;
@@ -179,7 +184,7 @@ void load_drive_table(DriveDesc& drive, const std::string& path) {
   }
   if (rows.size() < 2)
     throw DriveError(path + ": a drive table needs at least two rows of \"tau,f\"");
-  drive.table = std::move(rows);
+  return rows;
 }
 
 }  // namespace cb

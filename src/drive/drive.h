@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <istream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -45,6 +46,8 @@ inline constexpr std::uintmax_t kMaxDriveTableBytes = 64u << 20;
 // Throws DriveError naming the file, the line and what is wrong; refuses what is not a
 // regular file (a device, a pipe, a folder) and files over kMaxDriveTableBytes.
 void load_drive_table(DriveDesc& drive, const std::string& path);
+// The same from a stream already open (`path` names it in messages): the fuzzer's entry.
+std::vector<std::pair<double, double>> parse_drive_table(std::istream& in, const std::string& path);
 
 struct DriveError : std::runtime_error {
   using std::runtime_error::runtime_error;

@@ -79,6 +79,7 @@
 #include "scene/scene_reader.h"
 #include "scene/scene_sections.h"
 #include "scene/scene_units.h"
+#include "scene/toml_guard.h"
 
 namespace cb {
 
@@ -129,6 +130,7 @@ Override parse_override(const std::string& text) {
 SceneDesc parse_scene(const std::string& text, const std::string& path,
                       const std::vector<Override>& overrides) {
   toml::table root;
+  scene_detail::check_toml_text(text, path);  // toml++ 3.3.0 is undefined on some non-TOML
   try {
     root = toml::parse(text, path);
   } catch (const toml::parse_error& e) {

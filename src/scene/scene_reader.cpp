@@ -11,6 +11,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "scene/toml_guard.h"
+
 namespace cb::scene_detail {
 
 // ---- The schema: every key a scene may contain (documented in scene.cpp) -----------------
@@ -281,8 +283,12 @@ void SceneReader::apply(const Override& o) {
   // itself unless it is quoted, so drive.expr=1 means the expression "1".
   std::optional<toml::table> parsed;
   try {
-    parsed = toml::parse("v = " + o.value, std::string_view("--set"));
+    const std::string text = "v = " + o.value;
+    check_toml_text(text, "--set");  // what toml++ cannot read safely is not TOML either
+    parsed = toml::parse(text, std::string_view("--set"));
   } catch (const toml::parse_error&) {
+    parsed.reset();
+  } catch (const SceneError&) {
     parsed.reset();
   }
   const toml::node* value = parsed && parsed->size() == 1 ? parsed->get("v") : nullptr;
