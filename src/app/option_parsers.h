@@ -4,6 +4,8 @@
 // example (exit status 2).
 #pragma once
 
+#include "resources/resources.h"  // kMaxSweepValues: one limit for sweep and its parsers
+
 #include <string>
 #include <utility>
 #include <vector>
@@ -11,20 +13,6 @@
 namespace cb {
 
 // --vary KEY=LO:HI:COUNT[:log]: COUNT values from LO to HI, evenly or log-spaced.
-struct Vary {
-  std::string key;
-  double lo = 0, hi = 0;
-  int count = 0;
-  bool log = false;
-  double value(int i) const;
-};
-// The most values one sweep takes: a sweep row is a whole run, and COUNT becomes an int.
-constexpr int kMaxSweepValues = 1'000'000;
-Vary parse_vary(const std::string& text);
-
-// --shard I/S (I in 1..S) of `count` values: the half-open range [first, last) of a
-// contiguous block, so concatenating the shards' rows in order gives the full table.
-std::pair<int, int> parse_shard(const std::string& text, int count);
 
 // --at T1,T2,...: times tau >= 0, sorted, duplicates removed.
 std::vector<double> parse_times(const std::string& text);

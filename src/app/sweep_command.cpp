@@ -13,7 +13,6 @@
 
 #include "app/commands.h"
 #include "app/csv.h"
-#include "app/option_parsers.h"
 #include "app/progress.h"
 #include "app/sweep_setup.h"
 #include "cluster/shard.h"
@@ -119,11 +118,16 @@ int sweep_command(const SweepOptions& o) {
       pool.emplace_back(worker);
     std::thread watcher;
     if (!o.quiet)
-      on_progress = [&](std::size_t done) { progress.update(static_cast<double>(done)); };
-    results = sweep_first_breaks(scenes, o.solver, o.jobs, &g_interrupted, on_progress);
-  } catch (const std::runtime_error& e) {
-    std::fprintf(stderr, "chainbreak: %s\n", e.what());
-    return 1;
+      watcher = std::thread([&] {
+        // Reads the atomic flag, never `failure` (the workers write it under the mutex).
+        while (done < scenes.size() && !g_interrupted && !failed) {
+          progress.update(static_cast<double>(done));
+          std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        }
+      });
+    worker();
+    for (auto& t : pool) t.join();
+    if (watcher.joinable()) watcher.join();
   }
   if (g_interrupted) return interrupted_status("no CSV written");
   if (!failure.empty()) {

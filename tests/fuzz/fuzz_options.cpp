@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "app/option_parsers.h"
+#include "cluster/grid.h"
+#include "cluster/shard.h"
 #include "fuzz_support.h"
 #include "scene/scene.h"
 
@@ -14,12 +16,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     switch (data[0] % 3) {
       case 0: {
         const auto bar = text.find('|');
-        const cb::Vary vary = cb::parse_vary(text.substr(0, bar));
-        FUZZ_CHECK(vary.count >= 1 && vary.count <= cb::kMaxSweepValues);
-        const auto [first, last] =
-            cb::parse_shard(bar == std::string::npos ? "1/1" : text.substr(bar + 1), vary.count);
-        FUZZ_CHECK(0 <= first && first <= last && last <= vary.count);
-        if (first < last) (void)vary.value(first), (void)vary.value(last - 1);
+        // The sweep's own parsers (src/cluster): an axis, then a shard of its points.
+        const cb::GridAxis axis = cb::parse_vary(text.substr(0, bar));
+        FUZZ_CHECK(!axis.values.empty());
+        const cb::Shard shard =
+            cb::parse_shard(bar == std::string::npos ? "1/1" : text.substr(bar + 1));
+        const cb::PointRange r = cb::shard_points(axis.values.size(), shard);
+        FUZZ_CHECK(r.first <= r.last && r.last <= axis.values.size());
         break;
       }
       case 1: {
@@ -37,6 +40,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         break;
       }
     }
+  } catch (const cb::GridError&) {
   } catch (const cb::SceneError&) {
   }
   return 0;
