@@ -313,7 +313,7 @@ TEST_CASE("snapshot --overlay: the video's frame at that tau, pixel for pixel", 
   const auto off = chainbreak("snapshot " + kBreaking + " --at 12.5 --overlay all -o " +
                               dir.path.string() + common);
   CHECK(off.status == 2);
-  CHECK_THAT(off.err, Catch::Contains("a multiple of speed / fps = 1") &&
+  CHECK_THAT(off.err, Catch::Contains("speed / fps = 1 of tau") &&
                           Catch::Contains("nearest to 12.5: 12 or 13"));
   // Frame times that cannot be typed exactly (k / 3 here) are accepted as printed, to 10 digits.
   const auto third =

@@ -25,7 +25,7 @@ TEST_CASE("every theme's text reaches 7:1 on its background and its panels", "[t
   for (ThemeName name : {ThemeName::Dark, ThemeName::Light}) {
     const Theme& t = theme(name);
     INFO(theme_name(name));
-    for (Rgb8 fg : {t.text, t.text_dim}) {
+    for (Rgb8 fg : {t.text, t.text_dim, t.marker}) {  // the marker colour labels breaks
       CHECK(contrast_ratio(fg, t.background) >= 7.0);
       CHECK(contrast_ratio(fg, t.panel) >= 7.0);
     }

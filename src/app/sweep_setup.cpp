@@ -1,6 +1,8 @@
 #include "version.h"  // CHAINBREAK_VERSION (src/cmake/version.cmake)
 #include "app/sweep_setup.h"
 
+#include "resources/resources.h"  // kMaxSweepValues
+
 #include <filesystem>
 
 #include "app/csv.h"
@@ -21,7 +23,7 @@ Grid sweep_grid(const SweepOptions& o) {
     throw GridError(
         "sweep: nothing to vary; give --vary KEY=LO:HI:COUNT[:log] or --values "
         "KEY=V1,V2,... (several make a grid)");
-  check_grid_size(grid, std::size_t{1} << 40);
+  check_grid_size(grid, static_cast<std::size_t>(kMaxSweepValues));
   // Each key must be a number the scene takes: try its first value on the scene now, so an
   // unknown key names the option that brought it, not "--set".
   for (const auto& axis : grid.axes) {

@@ -1,5 +1,7 @@
 #include "cluster/grid.h"
 
+#include "resources/resources.h"  // kMaxSweepValues
+
 #include <charconv>
 #include <cmath>
 
@@ -67,7 +69,12 @@ GridAxis parse_vary(const std::string& text) {
       !parse_double(parts[1], hi) || !parse_double(parts[2], count) ||
       (parts.size() == 4 && parts[3] != "log"))
     throw GridError(usage);
-  if (count < 1 || count != std::floor(count) || count > 1e9)
+  // Checked as a double, before it becomes an integer (1e12 would overflow an int).
+  if (count > kMaxSweepValues)
+    throw GridError(spec + ": COUNT = " + std::string(parts[2]) +
+                    " values is more than the limit of " + std::to_string(kMaxSweepValues) +
+                    "; use fewer values, or split the range over several sweeps (--shard)");
+  if (count < 1 || count != std::floor(count))
     throw GridError(spec + ": COUNT must be a whole number of values, at least 1 (got " +
                     std::string(parts[2]) + "); e.g. " + key + "=" + std::string(parts[0]) + ":" +
                     std::string(parts[1]) + ":10");

@@ -104,7 +104,7 @@ void draw_phi_plot(Canvas& c) {
         const float y = m.py(level);
         dashed_hline(c, a.x, a.right(), y, col(c.theme.accent), w, 0.5f * fs);
         text_sub(c, c.fonts.sans, a.right() - 0.3f * fs, level > 0 ? y - 1.15f * fs : y + 0.1f * fs,
-                 c.theme.accent, level > 0 ? "\u03C6_c" : "\u2212\u03C6_c", 1.0f, 0.85f);
+                 c.theme.text_dim, level > 0 ? "\u03C6_c" : "\u2212\u03C6_c", 1.0f, 0.85f);
       }
     }
     // The exact solution is the unbroken chain's: where its lines end, and why. (Still: it

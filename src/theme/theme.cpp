@@ -50,7 +50,7 @@ constexpr Theme kLight{
     .bead = {60, 62, 70},
     .force = {17, 17, 20},
     .accent = {213, 94, 0},
-    .marker = {170, 90, 0},
+    .marker = {125, 62, 0},  // amber darkened to 7.7:1 on the panel: HUD and marker text use it
     .cursor = {150, 152, 160},
     .series = {{0, 114, 178}, {0, 158, 115}, {230, 159, 0}},
     .total = {17, 17, 20},
