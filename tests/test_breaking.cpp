@@ -104,7 +104,7 @@ TEST_CASE("The located first break matches the exact solution within 1e-6 at dt 
   }
 }
 
-TEST_CASE("A broken spring exerts no force; later breaks are recorded in order", "[breaking]") {
+TEST_CASE("A broken spring exerts no force, later breaks are recorded in order", "[breaking]") {
   // A fast ramp breaks spring N first (paper, Fig. 4(c), small zeta_c). From then on bead N
   // is free: with gamma = 0 its velocity grows by int beta tau dtau = beta (t^2 - tb^2) / 2.
   cb::ChainParams p;

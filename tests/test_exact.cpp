@@ -316,7 +316,7 @@ TEST_CASE("Critical and over-damped modes agree with RK4 on the bead equations",
   }
 }
 
-TEST_CASE("A kick exactly at tau counts as applied; modal_before is its left limit", "[exact]") {
+TEST_CASE("A kick exactly at tau counts as applied, modal_before is its left limit", "[exact]") {
   cb::DriveDesc d = drive_of(cb::DriveType::Impulses);
   d.times = {2.0};
   d.strengths = {0.75};

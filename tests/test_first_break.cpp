@@ -268,7 +268,7 @@ TEST_CASE("The breaking map of Fig. 4(c): N = 30, gamma = 0", "[first_break]") {
   CHECK(end < 6.0 * 30 + 10.0);
 }
 
-TEST_CASE("Stretch mode ignores compression; expr drives are refused", "[first_break]") {
+TEST_CASE("Stretch mode ignores compression, expr drives are refused", "[first_break]") {
   cb::DriveDesc push;
   push.type = cb::DriveType::Step;
   push.amplitude = -1.5;

@@ -321,7 +321,7 @@ TEST_CASE("Overlay switches parse from --overlay lists", "[overlay]") {
   CHECK(bad == "graphs");
 }
 
-TEST_CASE("Overlay switches in the scene's [render] table", "[overlay]") {
+TEST_CASE("Overlay switches in the scene's render table", "[overlay]") {
   const cb::SceneDesc d = cb::parse_scene(R"(
 [chain]
 beads = 5

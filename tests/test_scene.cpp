@@ -184,7 +184,7 @@ TEST_CASE("SI impulses, sine, table and expr drives are converted", "[scene]") {
   }
 }
 
-TEST_CASE("[units] without SI input only gives gamma from the friction", "[scene]") {
+TEST_CASE("units without SI input only gives gamma from the friction", "[scene]") {
   const std::string units = "[units]\nmass = 0.05\nstiffness = 200.0\nlength = 0.01\n";
   auto d = parse_scene(units + "friction = 0.5\n" + kBase.substr(0, kBase.find("gamma")) +
                            kBase.substr(kBase.find("[drive]")),
@@ -263,7 +263,7 @@ TEST_CASE("shipped breaking scenes break where their comments say", "[scene]") {
   CHECK(spring("ball_anomalous.toml") == 0);  // sin(2.5 pi) = 1 > 0: the lower string
 }
 
-TEST_CASE("[render] values are checked with positions and hints", "[scene]") {
+TEST_CASE("render values are checked with positions and hints", "[scene]") {
   const std::string base =
       "[chain]\nbeads = 3\n[drive]\ntype = \"ramp\"\nbeta = 1\n"
       "[integrator]\ndt = 0.01\nt_end = 1\n[render]\n";

@@ -219,7 +219,7 @@ TEST_CASE("a pull string needs a threshold", "[scene]") {
              Contains("add e.g. threshold = 1.0 to [chain]"));
 }
 
-TEST_CASE("[units] mistakes", "[scene]") {
+TEST_CASE("units mistakes", "[scene]") {
   const std::string units = "[units]\nmass = 0.05\nstiffness = 200.0\nlength = 0.01\n";
   CHECK_THAT(error_of(with("mass = 0.05", "mass = 0", units) + kBase),
              Contains("t.toml:2:8: units.mass must be > 0 (in kg), got 0; write e.g. mass = 0.05"));

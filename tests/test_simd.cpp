@@ -188,7 +188,7 @@ TEST_CASE("every SIMD path reproduces the bytes of the integrator before the SIM
   }
 }
 
-TEST_CASE("run names the path in its JSON, same numbers on each; a bad CHAINBREAK_SIMD exits 2",
+TEST_CASE("run names the path in its JSON, same numbers on each, a bad CHAINBREAK_SIMD exits 2",
           "[simd][cli]") {
   const std::string scene = std::string(CHAINBREAK_SCENES) + "/anomalous_breaking.toml";
   const std::string exe = CHAINBREAK_EXE;

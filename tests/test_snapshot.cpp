@@ -196,7 +196,7 @@ TEST_CASE("Spring colours are strain_color(phi / phi_c)", "[snapshot]") {
   }
 }
 
-TEST_CASE("Layout depends on the style only; the wall is hatched at 45 degrees", "[snapshot]") {
+TEST_CASE("Layout depends on the style only, the wall is hatched at 45 degrees", "[snapshot]") {
   const int n = 15;
   cb::SnapshotStyle style;
   auto other = rest_state(n);

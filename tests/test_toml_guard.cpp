@@ -42,7 +42,7 @@ TEST_CASE("issue 12 row 7: a non-ASCII character after a key is refused before t
   CHECK(error_of("title = \"ti\xEF\xBB\xBB\"\n" + kBase) == "(no error)");
 }
 
-TEST_CASE("issue 12 row 7: the --set value [1.0, U+0385... is read as text, not by toml++",
+TEST_CASE("issue 12 row 7: the --set value of an unclosed array with U+0385 is read as text, not by toml++",
           "[scene][hostile]") {
   // base64 ZHJpdmUudGltZXM9WzEuMCwgzoVpdgI=
   const std::string text = "drive.times=[1.0, \xCE\x85iv\x02";

@@ -15,6 +15,7 @@
 #include "app/csv.h"
 #include "app/progress.h"
 #include "app/sweep_setup.h"
+#include "app/sweep_values.h"
 #include "cluster/shard.h"
 #include "exact/first_break.h"
 #include "figures/break_maps.h"
@@ -27,17 +28,6 @@ namespace cb {
 int submit_sweep(const SweepOptions& o, const Grid& grid);  // sweep_submit.cpp
 
 namespace {
-
-// The first break of one scene by RK4 (stopping at it) or by the exact solution.
-FirstBreak first_break_of(const SceneDesc& scene, const std::string& solver) {
-  if (solver == "exact") return exact_first_break(scene.chain, scene.drive, scene.integrator.t_end);
-  try {
-    return simulated_first_break(scene.chain, scene.drive, scene.integrator.t_end,
-                                 scene.integrator.dt, &g_interrupted);
-  } catch (const std::runtime_error& e) {
-    throw std::runtime_error(scene.name + ": " + e.what());
-  }
-}
 
 // One CSV row: the point's values, then the spring that broke first and when (both empty
 // when nothing broke by t_end).
@@ -91,49 +81,20 @@ int sweep_command(const SweepOptions& o) {
   const std::vector<SceneDesc> scenes = point_scenes(o, grid, range);
   OutputFile out(o.csv);
   OutputFile out_record(record_path(o.csv));
-  std::vector<FirstBreak> results(scenes.size());
-  const int jobs = o.jobs > 0 ? o.jobs : std::max(1u, std::thread::hardware_concurrency());
-  std::atomic<std::size_t> next{0};
-  std::atomic<std::size_t> done{0};
-  std::string failure;
-  std::mutex failure_mutex;
-  std::atomic<bool> failed{false};  // what the watcher reads: `failure` is the workers'
-  auto worker = [&] {
-    for (std::size_t i; (i = next++) < scenes.size() && !g_interrupted;) {
-      try {
-        results[i] = first_break_of(scenes[i], o.solver);
-      } catch (const std::exception& e) {
-        std::lock_guard lock(failure_mutex);
-        if (failure.empty()) failure = e.what();
-        failed = true;
-        next = scenes.size();
-      }
-      ++done;
-    }
-  };
-  {
+  // The per-value work is sweep_values.h's, shared with the Python module: one pool of
+  // `jobs` threads, a watcher that reads only atomics (issue #12, row 13), first failure wins.
+  std::vector<FirstBreak> results;
+  try {
     Progress progress("sweep", static_cast<double>(scenes.size()), o.quiet);
-    std::vector<std::thread> pool;
-    for (int t = 1; t < std::min<int>(jobs, static_cast<int>(scenes.size())); ++t)
-      pool.emplace_back(worker);
-    std::thread watcher;
+    std::function<void(std::size_t)> on_progress;
     if (!o.quiet)
-      watcher = std::thread([&] {
-        // Reads the atomic flag, never `failure` (the workers write it under the mutex).
-        while (done < scenes.size() && !g_interrupted && !failed) {
-          progress.update(static_cast<double>(done));
-          std::this_thread::sleep_for(std::chrono::milliseconds(100));
-        }
-      });
-    worker();
-    for (auto& t : pool) t.join();
-    if (watcher.joinable()) watcher.join();
-  }
-  if (g_interrupted) return interrupted_status("no CSV written");
-  if (!failure.empty()) {
-    std::fprintf(stderr, "chainbreak: %s\n", failure.c_str());
+      on_progress = [&](std::size_t done) { progress.update(static_cast<double>(done)); };
+    results = sweep_first_breaks(scenes, o.solver, o.jobs, &g_interrupted, on_progress);
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "chainbreak: %s\n", e.what());
     return 1;
   }
+  if (g_interrupted) return interrupted_status("no CSV written");
   std::string text = grid.csv_header() + "\n";
   for (std::size_t i = 0; i < results.size(); ++i)
     append_row(text, grid.point(range.first + i), results[i]);
