@@ -216,10 +216,10 @@ TEST_CASE("Layout depends on the style only, the wall is hatched at 45 degrees",
   CHECK(hatches >= 3);
   CHECK(has_label(a, "compression"));
   CHECK(has_label(a, "tension"));
-  CHECK(has_label(a, "phi = +1"));  // unbreakable scale: strain_range = 1
+  CHECK(has_label(a, "φ = +1"));  // unbreakable scale: strain_range = 1
   style.threshold = 1.5;
   CHECK(has_label(cb::build_snapshot(rest_state(n), chain(n), 0.1, style), "+φ_c = 1.5"));
-  CHECK(has_label(b, "tau = 3.00"));
+  CHECK(has_label(b, "τ = 3.00"));
 }
 
 TEST_CASE("Force arrow: length proportional to f, gone when the pull string broke", "[snapshot]") {
