@@ -104,13 +104,13 @@ void RunSet::measure() {
     stop = std::max(stop, plans_[i].extent.tau_stop);
     for (const BreakEvent& b : plans_[i].extent.breaks) breaks.push_back(b.tau);
   }
-  FrameGrid grid(plan_.frame.speed / plan_.frame.fps, dt, plan_.grid.slow_motion());
-  if (scenes_.size() == 1) {
+  if (scenes_.size() == 1) {  // the run's own plan is the video's; the title card stays
+    const std::int64_t title_frames = plan_.title_frames;
     plan_ = plans_[0];
-    plan_.title_frames =
-        static_cast<std::int64_t>(std::llround(plan_.frame.title_card * plan_.frame.fps));
+    plan_.title_frames = title_frames;
     return;
   }
+  FrameGrid grid(plan_.frame.speed / plan_.frame.fps, dt, plan_.grid.slow_motion());
   grid.lay_out(stop, breaks);
   plan_.grid = grid;
   plan_.extent = plans_[0].extent;

@@ -26,16 +26,22 @@ void append(std::vector<T>& to, std::vector<T>& from) {
   to.insert(to.end(), std::make_move_iterator(from.begin()), std::make_move_iterator(from.end()));
 }
 
-}  // namespace
-
-RenderSnapshot stack_snapshots(std::vector<RenderSnapshot> parts, const std::vector<std::string>& labels,
-                               int width, int height, ThemeName theme) {
-  const Palette pal = palette(theme);
+// A frame of the theme's background with empty layers.
+RenderSnapshot empty_frame(int width, int height, const Palette& pal) {
   RenderSnapshot out;
   out.width = width;
   out.height = height;
   out.background = pal.background;
   out.layers.resize(kLayerCount);
+  return out;
+}
+
+}  // namespace
+
+RenderSnapshot stack_snapshots(std::vector<RenderSnapshot> parts, const std::vector<std::string>& labels,
+                               int width, int height, ThemeName theme) {
+  const Palette pal = palette(theme);
+  RenderSnapshot out = empty_frame(width, height, pal);
   float y = 0;
   for (std::size_t i = 0; i < parts.size(); ++i) {
     RenderSnapshot& p = parts[i];
@@ -67,11 +73,7 @@ RenderSnapshot stack_snapshots(std::vector<RenderSnapshot> parts, const std::vec
 RenderSnapshot title_card(int width, int height, ThemeName theme, const std::string& title,
                           const std::vector<std::string>& lines, const std::string& question) {
   const Palette pal = palette(theme);
-  RenderSnapshot out;
-  out.width = width;
-  out.height = height;
-  out.background = pal.background;
-  out.layers.resize(kLayerCount);
+  RenderSnapshot out = empty_frame(width, height, pal);
   const float px = frame_text_px(height);
   const float big = std::round(2.0f * px), ask = std::round(1.5f * px);
   auto& labels = out.layers[kLayerMarks].labels;
