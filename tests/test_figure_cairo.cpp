@@ -3,6 +3,7 @@
 // axes map them to, the light theme's border, text contrast on drawn pixels, SVG and PDF
 // checked by independent tools (xmllint, pdfinfo, pdffonts, pdftotext), and the `figures`
 // command as a user runs it.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
@@ -92,6 +93,24 @@ std::string squeeze(const std::string& text) {
   for (char ch : text)
     if (ch != ' ' && ch != '\n' && ch != '_' && ch != '\f') out += ch;
   return out;
+}
+
+// The character content of each <text> element of an SVG, its tags taken out (one string per
+// label, its runs and subscripts joined).
+std::vector<std::string> svg_texts(const std::string& svg) {
+  std::vector<std::string> texts;
+  for (std::size_t at = svg.find("<text"); at != std::string::npos; at = svg.find("<text", at)) {
+    const std::size_t end = svg.find("</text>", at);
+    std::string content;
+    bool in_tag = false;
+    for (std::size_t i = svg.find('>', at) + 1; i < end; ++i) {
+      if (svg[i] == '<' || svg[i] == '>') in_tag = svg[i] == '<';
+      else if (!in_tag) content += svg[i];
+    }
+    texts.push_back(content);
+    at = end;
+  }
+  return texts;
 }
 
 }  // namespace
@@ -266,6 +285,12 @@ TEST_CASE("figures command: PNG, SVG, PDF and CSV per figure, checked by xmllint
     const auto lint = cb::test::run_shell("xmllint --noout " + stem + ".svg");
     INFO(lint.err);
     CHECK(lint.status == 0);
+    // The SVG's labels are real text (selectable, searchable): each axis label is one <text>
+    // element, and no glyph is drawn as an outline (cairo's <symbol id="glyph...">).
+    const std::string svg = cb::test::slurp(stem + ".svg");
+    CHECK(svg.find("<symbol") == std::string::npos);
+    std::vector<std::string> svg_labels;
+    for (const std::string& t : svg_texts(svg)) svg_labels.push_back(squeeze(t));
     const auto info = cb::test::run_shell("pdfinfo " + stem + ".pdf");
     INFO(info.err);
     CHECK(info.status == 0);
@@ -283,6 +308,8 @@ TEST_CASE("figures command: PNG, SVG, PDF and CSV per figure, checked by xmllint
       for (const std::string& label : {p.x.label, p.y.label}) {
         INFO("axis label '" << label << "'");
         CHECK(squeeze(text.out).find(squeeze(label)) != std::string::npos);
+        if (!label.empty())
+          CHECK(std::count(svg_labels.begin(), svg_labels.end(), squeeze(label)) >= 1);
       }
   }
 

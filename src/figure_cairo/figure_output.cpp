@@ -10,6 +10,7 @@
 
 #include "figure_cairo/cairo_handles.h"
 #include "figure_cairo/figure_draw.h"
+#include "figure_cairo/svg_text.h"
 
 namespace cb {
 
@@ -106,13 +107,16 @@ std::string figure_vector(const Figure& figure, const Theme& theme, FigureFormat
       cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR,
                                      "chainbreak figures");
     }
+    SvgTextLayer text;  // before the context, which points to it
     {
       const CairoContext cr(cairo_create(surface.get()));
+      if (format == FigureFormat::Svg) text.attach(cr.get());
       cairo_scale(cr.get(), scale, scale);
       draw_figure(cr.get(), figure, theme, width, height);
     }
     cairo_surface_finish(surface.get());
     check(surface.get(), format == FigureFormat::Svg ? "write the SVG" : "write the PDF");
+    if (format == FigureFormat::Svg) return text.insert_into(bytes);
   }
   return bytes;
 }

@@ -1,6 +1,7 @@
 #include "figure_cairo/figure_text.h"
 
 #include "figure_cairo/figure_fonts.h"
+#include "figure_cairo/svg_text.h"
 
 namespace cb {
 
@@ -62,12 +63,21 @@ double draw_text(cairo_t* cr, const TextFont& font, double x, double y, const st
   for (const Run& r : parts) width += advance(cr, font, r);
   double pen = x - align * width;
   const double baseline = y + kHalfCap * font.size;
+  std::vector<SvgTextRun> placed;
   for (const Run& r : parts) {
     if (r.text.empty()) continue;
-    select(cr, font, r.sub);
-    cairo_move_to(cr, pen, baseline + (r.sub ? kSubDrop * font.size : 0.0));
-    cairo_show_text(cr, r.text.c_str());
+    placed.push_back({r.text, pen, baseline + (r.sub ? kSubDrop * font.size : 0.0),
+                      r.sub ? kSubScale * font.size : font.size});
     pen += advance(cr, font, r);
+  }
+  if (SvgTextLayer* layer = SvgTextLayer::of(cr)) {
+    layer->add(cr, font.face, placed);
+    return width;
+  }
+  for (const SvgTextRun& r : placed) {
+    select(cr, font, r.size < font.size);
+    cairo_move_to(cr, r.x, r.y);
+    cairo_show_text(cr, r.text.c_str());
   }
   cairo_new_path(cr);  // show_text leaves the pen as the current point: start clean
   return width;
