@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "gl_test_support.h"
+#include "output/png_writer.h"
 #include "render/renderer.h"
 #include "snapshot/snapshot.h"
 #include "test_support.h"
@@ -205,4 +206,49 @@ TEST_CASE("two scenes side by side: one video of the stated size, each run's own
   CHECK(j["runs"][0]["breaks"][0]["spring"] == 30);  // the fast pull breaks the pulled end
   CHECK(j["runs"][1]["breaks"][0]["spring"] == 2);   // the slower one near the wall
   CHECK(j["runs"][0]["label"].get<std::string>().find("β = 0.075") != std::string::npos);
+}
+
+TEST_CASE("snapshot stacks two scenes in one picture, each band showing its own run",
+          "[pictures][cli]") {
+  auto context = cb::test::create_or_skip(cb::GlBackend::Auto);
+  if (!context) return;
+  const cb::test::TempDir dir("chainbreak-stacked-snapshot");
+  const std::string a = std::string(CHAINBREAK_SCENES) + "/regimes/fast_pull.toml";
+  const std::string b = std::string(CHAINBREAK_SCENES) + "/regimes/slow_pull.toml";
+  // At tau 45 the fast pull's spring 30 has broken (tau 41.0, `run`), the slow pull's first
+  // break is still to come (tau 80.5).
+  const auto r = cb::test::run_chainbreak("snapshot " + a + " " + b +
+                                          " --at 45 --size 640x480 --theme light -o " +
+                                          dir.path.string());
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const std::string png = (dir.path / "fast_pull_vs_slow_pull_tau_000045.000.png").string();
+  CHECK(r.out == png + "\n");
+  const cb::Image image = cb::read_png(png);
+  REQUIRE(image.width == 640);
+  REQUIRE(image.height == 480);
+  // The break marker is drawn in the theme's marker colour: in the top band
+  // (the fast pull) and nowhere in the bottom one.
+  const cb::Rgb8 marker = cb::theme(cb::ThemeName::Light).marker;
+  int top = 0, bottom = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const cb::Rgb8 p = pixel(image, x, y);
+      if (std::abs(p.r - marker.r) + std::abs(p.g - marker.g) + std::abs(p.b - marker.b) < 12)
+        ++(y < image.height / 2 ? top : bottom);
+    }
+  CHECK(top > 10);  // the marker arrow (its label is drawn in the text colour)
+  CHECK(bottom == 0);
+  // The background is the light theme's in both bands (corners).
+  const cb::Rgb8 bg = cb::theme(cb::ThemeName::Light).background;
+  for (int y : {2, image.height / 2 + 4, image.height - 3}) {
+    const cb::Rgb8 p = pixel(image, image.width - 3, y);
+    CHECK((p.r == bg.r && p.g == bg.g && p.b == bg.b));
+  }
+
+  // The overlay plots one run: stacked scenes with --overlay are a user error.
+  const auto overlay = cb::test::run_chainbreak("snapshot " + a + " " + b +
+                                                " --at 45 --overlay hud -o " + dir.path.string());
+  CHECK(overlay.status == 2);
+  CHECK(overlay.err.find("--overlay") != std::string::npos);
 }

@@ -36,8 +36,9 @@ std::vector<std::pair<std::string, std::string>> parameters(const SceneDesc& s) 
   return p;
 }
 
-// Each run's title and the parameters in which the runs differ ("β = 0.075, ζ_c = 40").
-std::vector<std::string> run_labels(const std::vector<SceneDesc>& scenes) {
+}  // namespace
+
+std::vector<std::string> side_by_side_labels(const std::vector<SceneDesc>& scenes) {
   std::vector<std::vector<std::pair<std::string, std::string>>> all;
   for (const SceneDesc& s : scenes) all.push_back(parameters(s));
   std::vector<std::string> labels;
@@ -55,8 +56,6 @@ std::vector<std::string> run_labels(const std::vector<SceneDesc>& scenes) {
   }
   return labels;
 }
-
-}  // namespace
 
 RunSet::RunSet(std::vector<SceneDesc> scenes, const RenderOptions& o) : scenes_(std::move(scenes)) {
   if (scenes_.empty() || scenes_.size() > static_cast<std::size_t>(kMaxSideBySide))
@@ -79,7 +78,7 @@ RunSet::RunSet(std::vector<SceneDesc> scenes, const RenderOptions& o) : scenes_(
     for (const SceneDesc& s : scenes_) plans_.push_back(plan_render(s, band));
     plan_.overlay = OverlaySwitches{false, false, false, false};
     plan_.overlay_layout = OverlayLayout{};
-    labels_ = run_labels(scenes_);
+    labels_ = side_by_side_labels(scenes_);
   }
   plan_.title_frames =
       static_cast<std::int64_t>(std::llround(plan_.frame.title_card * plan_.frame.fps));
@@ -163,8 +162,9 @@ std::string RunSet::json(const std::string& gl) const {
   for (std::size_t i = 0; i < scenes_.size(); ++i) {
     const RenderPlan& p = plan_;
     runs += (i ? "," : "") + std::string("{\"scene\":") + json_string(scenes_[i].path) +
-            ",\"title\":" + json_string(scenes_[i].title) + ",\"label\":" + json_string(labels_[i]) +
-            ",\"breaks\":" + breaks_json(p, breaks(i)) + "}";
+            ",\"title\":" + json_string(scenes_[i].title) +
+            ",\"label\":" + json_string(labels_[i]) + ",\"breaks\":" + breaks_json(p, breaks(i)) +
+            "}";
   }
   j.insert(j.size() - 1, runs + "]");
   return j;

@@ -19,6 +19,9 @@ namespace cb {
 
 inline constexpr int kMaxSideBySide = 4;
 
+// Each run's label: its title and the parameters in which the runs differ ("β = 0.075").
+std::vector<std::string> side_by_side_labels(const std::vector<SceneDesc>& scenes);
+
 class RunSet {
  public:
   // Plans every run (cheap: options and scenes checked). Throws SceneError.

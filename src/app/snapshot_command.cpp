@@ -3,20 +3,23 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <optional>
 
 #include "app/commands.h"
 #include "app/frame_source.h"
 #include "app/frames.h"
 #include "app/option_parsers.h"
-#include "app/zoom.h"
 #include "app/render_plan.h"
+#include "app/run_set.h"
 #include "app/snapshot_images.h"
+#include "app/zoom.h"
 #include "output/frame_writer.h"
 #include "output/png_writer.h"
 #include "overlay/overlay.h"
 #include "physics/integrator.h"
 #include "resources/resources.h"
+#include "snapshot/stack.h"
 
 namespace cb {
 
@@ -75,7 +78,8 @@ int overlay_images(const SnapshotRequest& o, const SceneDesc& scene,
                        "; see integrator.t_end and after_break)");
     if (frame < 0) {
       const std::int64_t after = grid.first_frame_at_or_after(tau);
-      throw SceneError("--at " + o.at_text + ": with --overlay each tau must be a frame time of the " +
+      throw SceneError("--at " + o.at_text +
+                       ": with --overlay each tau must be a frame time of the " +
                        "video (every speed / fps = " + number(grid.tau_per_frame()) +
                        " of tau, closer in slow motion); nearest to " + number(tau) + ": " +
                        number(grid.tau(std::max<std::int64_t>(0, after - 1))) + " or " +
@@ -116,72 +120,142 @@ void require_distinct_names(const std::string& scene, const std::vector<double>&
                        "; the file names keep 3 decimals, so give times at least 0.001 apart");
 }
 
-int snapshot_images(const SceneDesc& scene, const SnapshotRequest& request,
-                    const SnapshotConsumer& consume, std::string& error) {
-  // The requested theme reaches the pictures through the frame options, as --theme does.
-  SnapshotRequest o = request;
-  if (!o.theme.empty()) o.frame.theme = o.theme;
-  // Two runs at most at once (the grid's and an off-grid time's, or the pre-pass), and a frame.
-  MemoryEstimate memory;
-  memory.needs.push_back({"RK4 state", 2 * rk4_bytes(scene.chain.beads)});
-  require_memory(memory, machine_memory(), "snapshot " + scene.name,
-                 "use fewer beads (chain.beads)");
-  if (!o.overlay.empty() && o.overlay != "none") return overlay_images(o, scene, consume, error);
-  const std::vector<double>& times = o.times;
-  const RenderDesc frame = frame_settings(scene, o.frame);
-  const double dt = scene.integrator.dt;
-  const RunExtent extent = measure_run(scene, times.back(), dt);
-  const SnapshotStyle style = snapshot_style(scene, frame, extent);
-  Canvas canvas = make_canvas(o.frame, frame.width, frame.height);
+namespace {
 
-  // On-grid times (sorted) share one run; an off-grid time gets a run of its own.
-  Integrator grid_run(scene.chain, make_forcing(scene.drive), {dt, 1});
-  for (double tau : times) {
-    if (o.stop && *o.stop) return interrupt_status();
+// One scene's chain at increasing exact times, as snapshot data laid out for `frame`.
+class ChainAtTimes {
+ public:
+  ChainAtTimes(const SceneDesc& scene, const RenderDesc& frame, double last_tau)
+      : scene_(scene),
+        frame_(frame),
+        extent_(measure_run(scene, last_tau, scene.integrator.dt)),
+        style_(snapshot_style(scene, frame, extent_)),
+        grid_run_(scene.chain, make_forcing(scene.drive), {scene.integrator.dt, 1}) {}
+
+  // Null when the state stopped being finite (error() says why) or on an interrupt.
+  std::optional<RenderSnapshot> at(double tau) {
     // The integrator lands exactly on tau: on the scene's grid when tau is a multiple of dt,
-    // otherwise with the step shrunk to tau / ceil(tau / dt) (never larger than dt).
+    // otherwise with the step shrunk to tau / ceil(tau / dt) (never larger than dt), in a run
+    // of its own.
+    const double dt = scene_.integrator.dt;
     const double steps = tau / dt;
     const bool on_grid = std::abs(steps - std::round(steps)) < 1e-9 * std::max(1.0, steps);
     const auto count = static_cast<std::int64_t>(on_grid ? std::llround(steps) : std::ceil(steps));
     const double step_dt = on_grid || count == 0 ? dt : tau / static_cast<double>(count);
     std::optional<Integrator> own_run;
     if (!on_grid)
-      own_run.emplace(scene.chain, make_forcing(scene.drive), IntegratorOptions{step_dt, 1});
-    Integrator& sim = on_grid ? grid_run : *own_run;
+      own_run.emplace(scene_.chain, make_forcing(scene_.drive), IntegratorOptions{step_dt, 1});
+    Integrator& sim = on_grid ? grid_run_ : *own_run;
     if (!advance_watching(sim, count)) {
-      if (g_interrupted) return interrupt_status();
-      error = sim.error();
-      return 1;
+      error_ = sim.error();
+      return std::nullopt;
     }
     // auto / break zoom: a single picture has no camera history, so it settles at once.
-    SnapshotStyle at_tau = style;
-    ZoomCamera camera(parse_zoom(frame.zoom, scene.chain.beads, "--zoom"), scene.chain.beads,
-                      extent.breaks.empty() ? 0 : extent.breaks.front().spring,
-                      extent.breaks.empty() ? -1.0 : extent.breaks.front().tau);
+    SnapshotStyle at_tau = style_;
+    ZoomCamera camera(parse_zoom(frame_.zoom, scene_.chain.beads, "--zoom"), scene_.chain.beads,
+                      extent_.breaks.empty() ? 0 : extent_.breaks.front().spring,
+                      extent_.breaks.empty() ? -1.0 : extent_.breaks.front().tau);
     camera.frame(sim.state(), at_tau.zoom_first, at_tau.zoom_last, true);
-    const RenderSnapshot snap = build_snapshot(sim.state(), scene.chain, sim.force_now(), at_tau);
-    consume(tau, canvas.renderer->render(snap));
+    return build_snapshot(sim.state(), scene_.chain, sim.force_now(), at_tau);
+  }
+  const std::string& error() const { return error_; }
+
+ private:
+  const SceneDesc& scene_;
+  RenderDesc frame_;
+  RunExtent extent_;
+  SnapshotStyle style_;
+  Integrator grid_run_;  // the on-grid times (sorted) share one run
+  std::string error_;
+};
+
+}  // namespace
+
+int snapshot_images(const std::vector<SceneDesc>& scenes, const SnapshotRequest& request,
+                    const SnapshotConsumer& consume, std::string& error) {
+  if (scenes.empty() || scenes.size() > static_cast<std::size_t>(kMaxSideBySide))
+    throw SceneError("snapshot: give 1 to " + std::to_string(kMaxSideBySide) +
+                     " scenes (stacked), not " + std::to_string(scenes.size()));
+  // The requested theme reaches the pictures through the frame options, as --theme does.
+  SnapshotRequest o = request;
+  if (!o.theme.empty()) o.frame.theme = o.theme;
+  // Per scene two runs at most at once (the grid's and an off-grid time's, or the pre-pass).
+  MemoryEstimate memory;
+  for (const SceneDesc& scene : scenes)
+    memory.needs.push_back({"RK4 state of " + scene.name, 2 * rk4_bytes(scene.chain.beads)});
+  require_memory(memory, machine_memory(), "snapshot " + scenes[0].name,
+                 "use fewer beads (chain.beads)");
+  const bool overlay = !o.overlay.empty() && o.overlay != "none";
+  if (overlay && scenes.size() > 1)
+    throw SceneError(
+        "--overlay: the overlay plots one run; stacked scenes are drawn without it "
+        "(give one scene, or leave out --overlay)");
+  if (overlay) return overlay_images(o, scenes[0], consume, error);
+
+  // The picture's size and theme are the first scene's; 2-4 scenes each get a band of its
+  // height, laid out as render's side-by-side video lays them out (run_set.h).
+  const RenderDesc frame = frame_settings(scenes[0], o.frame);
+  FrameOptions band_options = o.frame;
+  if (scenes.size() > 1)
+    band_options.size =
+        std::to_string(frame.width) + "x" +
+        std::to_string(std::max(16, frame.height / static_cast<int>(scenes.size())));
+  std::vector<std::unique_ptr<ChainAtTimes>> chains;
+  for (const SceneDesc& scene : scenes)
+    chains.push_back(std::make_unique<ChainAtTimes>(
+        scene, frame_settings(scene, scenes.size() > 1 ? band_options : o.frame), o.times.back()));
+  const std::vector<std::string> labels =
+      scenes.size() > 1 ? side_by_side_labels(scenes) : std::vector<std::string>{};
+  Canvas canvas = make_canvas(o.frame, frame.width, frame.height);
+
+  for (double tau : o.times) {
+    if (o.stop && *o.stop) return interrupt_status();
+    std::vector<RenderSnapshot> parts;
+    for (std::size_t i = 0; i < chains.size(); ++i) {
+      std::optional<RenderSnapshot> snap = chains[i]->at(tau);
+      if (!snap) {
+        if (g_interrupted) return interrupt_status();
+        error = (scenes.size() > 1 ? scenes[i].name + ": " : "") + chains[i]->error();
+        return 1;
+      }
+      parts.push_back(std::move(*snap));
+    }
+    consume(tau, canvas.renderer->render(
+                     scenes.size() == 1
+                         ? parts[0]
+                         : stack_snapshots(std::move(parts), labels, frame.width, frame.height,
+                                           parse_theme(frame.theme).value_or(ThemeName::Dark))));
   }
   return 0;
 }
 
+int snapshot_images(const SceneDesc& scene, const SnapshotRequest& request,
+                    const SnapshotConsumer& consume, std::string& error) {
+  return snapshot_images(std::vector<SceneDesc>{scene}, request, consume, error);
+}
+
 int snapshot_command(const SnapshotOptions& o) {
-  const SceneDesc scene = load_scene(o.scene, o.overrides);
+  std::vector<SceneDesc> scenes;
+  for (const std::string& path : o.scenes.empty() ? std::vector<std::string>{o.scene} : o.scenes)
+    scenes.push_back(load_scene(path, o.overrides));
+  // Stacked scenes share one picture per time, named after all of them.
+  std::string name = scenes[0].name;
+  for (std::size_t i = 1; i < scenes.size(); ++i) name += "_vs_" + scenes[i].name;
   SnapshotRequest request;
   request.times = parse_times(o.at);
   request.at_text = o.at;
   request.frame = o.frame;
   request.overlay = o.overlay;
   request.stop = &g_interrupted;
-  require_distinct_names(scene.name, request.times);
+  require_distinct_names(name, request.times);
   require_writable_dir(o.out_dir);
   std::string error;
   std::size_t written = 0;
   const int status = snapshot_images(
-      scene, request,
+      scenes, request,
       [&](double tau, Image&& image) {
         const std::string path =
-            (std::filesystem::path(o.out_dir) / snapshot_name(scene.name, tau)).string();
+            (std::filesystem::path(o.out_dir) / snapshot_name(name, tau)).string();
         write_png(path, image);
         std::printf("%s\n", path.c_str());
         ++written;

@@ -30,5 +30,9 @@ using SnapshotConsumer = std::function<void(double tau, Image&& image)>;
 // for a user mistake. Returns 0, 1 (non-finite state, `error` says why) or 130 (stopped).
 int snapshot_images(const SceneDesc& scene, const SnapshotRequest& request,
                     const SnapshotConsumer& consume, std::string& error);
+// 2-4 scenes stacked in one picture per time (labelled as render's side-by-side video), the
+// first scene's frame size and theme; one scene is the call above. No overlay when stacked.
+int snapshot_images(const std::vector<SceneDesc>& scenes, const SnapshotRequest& request,
+                    const SnapshotConsumer& consume, std::string& error);
 
 }  // namespace cb
