@@ -104,8 +104,10 @@ std::vector<std::string> svg_texts(const std::string& svg) {
     std::string content;
     bool in_tag = false;
     for (std::size_t i = svg.find('>', at) + 1; i < end; ++i) {
-      if (svg[i] == '<' || svg[i] == '>') in_tag = svg[i] == '<';
-      else if (!in_tag) content += svg[i];
+      if (svg[i] == '<' || svg[i] == '>')
+        in_tag = svg[i] == '<';
+      else if (!in_tag)
+        content += svg[i];
     }
     texts.push_back(content);
     at = end;

@@ -70,6 +70,15 @@ TEST_CASE("validate: an in-memory scene is held to the file's rules, messages st
   s.drive.type = cb::DriveType::Expr;
   s.drive.expr = "0.02*t +";
   CHECK_THAT(validate_error(s), Contains("drive.expr \"0.02*t +\""));
+  // [render] zoom is checked against the chain in memory, as the file's other keys.
+  s = memory_scene();
+  s.render.zoom = "10:20";
+  CHECK(validate_error(s) == "(no error)");
+  s.chain.beads = 10;
+  CHECK_THAT(validate_error(s), Contains("render.zoom = 10:20: springs out of range"));
+  CHECK_THAT(validate_error(s), Contains("N = 10"));
+  s.render.zoom = "wide";
+  CHECK_THAT(validate_error(s), Contains("render.zoom = wide: not a zoom"));
 }
 
 TEST_CASE("validate: a scene read from a file names the file and line, or the --set",

@@ -1,25 +1,15 @@
-// Zoom: which stretch of springs a frame draws across its panel (`--zoom`, [render] zoom).
-//   "J0:J1"        springs J0..J1, fixed;
-//   "auto[:W]"     W springs (default 60) following the most strained spring, smoothly;
-//   "break[:W]"    as auto, then centred on the first break's spring once it is near.
-// The camera moves at most a tenth of its width per frame and eases towards its target, so it
-// never jumps between frames; it starts at the pulled end, where every run starts.
+// The zoom camera: which stretch of springs a frame draws across its panel, following the
+// ZoomSpec (scene/zoom_spec.h: `--zoom`, [render] zoom). The camera moves at most a tenth of its
+// width per frame and eases towards its target, so it never jumps between frames; it starts at the
+// pulled end, where every run starts.
 #pragma once
 
 #include <string>
 
 #include "physics/chain.h"
+#include "scene/zoom_spec.h"
 
 namespace cb {
-
-struct ZoomSpec {
-  enum class Mode { Off, Fixed, Auto, Break } mode = Mode::Off;
-  int first = 0, last = 0;  // Fixed: springs first..last
-  int width = 60;           // Auto, Break: springs in view
-};
-
-// Throws SceneError naming the forms above when `text` is none of them or out of 1..N.
-ZoomSpec parse_zoom(const std::string& text, int beads, const std::string& where);
 
 class ZoomCamera {
  public:

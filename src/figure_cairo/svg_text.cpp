@@ -53,16 +53,15 @@ void SvgTextLayer::add(cairo_t* cr, FontFace face, const std::vector<SvgTextRun>
   cairo_get_matrix(cr, &m);
   const auto byte = [](double v) { return std::to_string(static_cast<int>(v * 255.0 + 0.5)); };
   const bool identity = m.xx == 1 && m.yx == 0 && m.xy == 0 && m.yy == 1 && m.x0 == 0 && m.y0 == 0;
-  std::string e = "<text" +
-                  (identity ? std::string()
-                            : " transform=\"matrix(" + number(m.xx) + " " + number(m.yx) + " " +
-                                  number(m.xy) + " " + number(m.yy) + " " + number(m.x0) + " " +
-                                  number(m.y0) + ")\"") +
-                  " font-family=\"" + font_family(face) + "\"" +
-                  (face == FontFace::Bold ? " font-weight=\"bold\"" : "") + " fill=\"rgb(" +
-                  byte(r) + "," + byte(g) + "," + byte(b) + ")\"" +
-                  (a < 1.0 ? " fill-opacity=\"" + number(a) + "\"" : "") +
-                  " xml:space=\"preserve\">";
+  std::string e =
+      "<text" +
+      (identity ? std::string()
+                : " transform=\"matrix(" + number(m.xx) + " " + number(m.yx) + " " + number(m.xy) +
+                      " " + number(m.yy) + " " + number(m.x0) + " " + number(m.y0) + ")\"") +
+      " font-family=\"" + font_family(face) + "\"" +
+      (face == FontFace::Bold ? " font-weight=\"bold\"" : "") + " fill=\"rgb(" + byte(r) + "," +
+      byte(g) + "," + byte(b) + ")\"" + (a < 1.0 ? " fill-opacity=\"" + number(a) + "\"" : "") +
+      " xml:space=\"preserve\">";
   // Every run at the position draw_text computed from cairo's own advances: the SVG viewer's
   // spacing cannot drift from the PNG's.
   for (const SvgTextRun& run : runs)

@@ -15,6 +15,7 @@
 #include "scene/scene.h"
 #include "scene/scene_reader.h"
 #include "scene/scene_units.h"
+#include "scene/zoom_spec.h"
 
 namespace cb {
 
@@ -301,12 +302,19 @@ void Checker::render() const {
                               "break, e.g. slowmo = 0.1");
   finite("render.slowmo_window", d.slowmo_window);
   if (!(d.slowmo_window > 0.0))
-    fail("render.slowmo_window", "render.slowmo_window must be > 0 (tau either side of a "
-                                     "break), got " + format_exact(d.slowmo_window));
+    fail("render.slowmo_window",
+         "render.slowmo_window must be > 0 (tau either side of a "
+         "break), got " +
+             format_exact(d.slowmo_window));
   finite("render.title_card", d.title_card);
   if (!(d.title_card >= 0.0 && d.title_card <= 60.0))
     fail("render.title_card", "render.title_card = " + format_exact(d.title_card) +
                                   " must be 0 to 60 seconds, e.g. title_card = 3");
+  try {  // the springs of a fixed zoom must exist in this chain
+    parse_zoom(d.zoom, scene_.chain.beads, "render.zoom =");
+  } catch (const SceneError& e) {
+    fail("render.zoom", e.what());
+  }
 }
 
 }  // namespace
