@@ -254,6 +254,27 @@ TEST_CASE("rows 5-6: render --speed 1e-300 and 1e-6 are refused before planning"
   }
 }
 
+TEST_CASE("slow motion that would pass the frame limit is refused once the breaks are known",
+          "[hardening][cli]") {
+  // At the normal pace 56 tau x 240 fps = 13 441 frames, inside the limit; slowed to a
+  // hundredth over the whole run (window 100 tau around its 14 breaks) 1.3 million.
+  const std::string scene = std::string(CHAINBREAK_SCENES) + "/regimes/fast_pull.toml";
+  const auto slow = run_chainbreak("render " + scene +
+                                   " --dry-run --fps 240 --speed 1 --slowmo 0.01 "
+                                   "--slowmo-window 100");
+  INFO(slow.err);
+  CHECK(slow.status == 2);
+  CHECK(slow.out.empty());
+  CHECK_THAT(slow.err, Contains("slow motion ×0.01 within 100 tau of 14 break(s) makes more "
+                                "than the limit of 1000000 frames") &&
+                           Contains("raise --slowmo"));
+  // A tenth of the speed fits: 13 441 + the slow windows' extra frames.
+  const auto fits = run_chainbreak("render " + scene +
+                                   " --dry-run --fps 240 --speed 1 --slowmo 0.1 "
+                                   "--slowmo-window 100");
+  CHECK(fits.status == 0);
+}
+
 TEST_CASE("row 10: a misspelled CHAINBREAK_GL is a user error (status 2)", "[hardening][cli]") {
   const auto r =
       cb::test::run_shell("CHAINBREAK_GL=nonsense " + std::string(CHAINBREAK_EXE) + " render " +

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "app/csv.h"
+#include "resources/resources.h"
 #include "scene/scene.h"
 
 namespace cb {
@@ -48,6 +49,17 @@ void FrameGrid::lay_out(double tau_stop, const std::vector<double>& breaks) {
   const double ease = 0.5 * slow_.window;
   std::int64_t s = 0;
   while (s <= last) {
+    // The planner's budget counted the normal pace; slow windows add frames only the breaks
+    // decide, so the real count is checked here, before a frame is drawn (issue #12).
+    if (static_cast<double>(steps_.size()) >= kMaxFrames)
+      throw SceneError(
+          "render: slow motion ×" + number_text(slow_.factor) + " within " +
+          number_text(slow_.window) + " tau of " + std::to_string(breaks.size()) +
+          " break(s) makes more than the limit of " +
+          std::to_string(static_cast<std::int64_t>(kMaxFrames)) +
+          " frames (stopped counting at tau " + number_text(static_cast<double>(s) * dt_) +
+          " of " + number_text(tau_stop) +
+          "); raise --slowmo (e.g. 0.1), narrow --slowmo-window, or raise --speed");
     steps_.push_back(s);
     std::int64_t h = substeps_;
     if (slow_.on()) {

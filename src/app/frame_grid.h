@@ -36,6 +36,7 @@ class FrameGrid {
   const SlowMotion& slow_motion() const { return slow_; }
 
   // Lays the frames out from tau = 0 through tau_stop, slowing around `breaks` (their tau).
+  // Throws SceneError past kMaxFrames (resources.h), with the count's cause and the fix.
   void lay_out(double tau_stop, const std::vector<double>& breaks);
   std::int64_t frames() const { return static_cast<std::int64_t>(steps_.size()); }
   // Frame k's integrator step; past the laid-out frames it goes on at the normal pace (the
