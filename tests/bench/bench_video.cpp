@@ -17,6 +17,8 @@
 //   gives the same kFrames frames), writing to /dev/shm; wall time from spawn to exit, so
 //   process start, scene, pre-pass, GL context, physics, drawing, readback, conversion,
 //   encoding, muxing and fsync all count.
+//   With $CHAINBREAK_BENCH_BASELINE (another build's chainbreak) a third half times that
+//   program on the same clip, so a change's cost shows as render/baseline in one run.
 //   Counters: frames/s of each, their ratio, busy cores of each (CPU time / wall time), and
 //   "others": cores busy with other processes meanwhile (/proc/stat minus ours), which
 //   flags a repetition measured on a shared machine.
@@ -40,6 +42,7 @@ extern "C" {
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -114,8 +117,8 @@ std::string scene_path() {
 // Runs `chainbreak ARGS` (stdout to /dev/null); returns the wall time, or < 0 if it failed.
 // posix_spawn, not fork: this process holds ~2 GB of frames, whose page tables a fork
 // would copy on the clock.
-double run_chainbreak(std::vector<std::string> args) {
-  args.insert(args.begin(), CHAINBREAK_EXE);
+double run_chainbreak(std::vector<std::string> args, const char* exe = CHAINBREAK_EXE) {
+  args.insert(args.begin(), exe);
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -353,24 +356,31 @@ void BM_Video(benchmark::State& state) {
   const fs::path dir = fs::path("/dev/shm") / ("bench_video-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const fs::path out = dir / "anomalous_breaking.mp4";
-  static int pairs = 0;  // alternates the order: neither half always runs first
-  Half alone, render;
+  static int pairs = 0;  // rotates the order: no half always runs first
+  // $CHAINBREAK_BENCH_BASELINE: another build's chainbreak (e.g. before a change), timed as a
+  // third half of every repetition, so "did the change slow render" is answered in one run.
+  const char* baseline_exe = std::getenv("CHAINBREAK_BENCH_BASELINE");
+  const int halves = baseline_exe ? 3 : 2;
+  Half alone, render, baseline;
   double convert = 0.0;
   for (auto _ : state) {
-    for (int half = 0; half < 2; ++half) {
+    for (int half = 0; half < halves; ++half) {
       const Meter meter;
-      if ((half + pairs) % 2 == 0) {
+      const int which = (half + pairs) % halves;
+      if (which == 0) {
         alone.seconds = encode_alone(preset, convert);
         alone.cores = meter.cores(), alone.others = meter.others();
       } else {
-        render.seconds = run_chainbreak({"render", scene_path(), "-o", out.string(), "--set",
-                                         kClipEnd, "--preset", preset, "--quiet"});
-        render.cores = meter.cores(), render.others = meter.others();
+        Half& h = which == 1 ? render : baseline;
+        h.seconds = run_chainbreak({"render", scene_path(), "-o", out.string(), "--set", kClipEnd,
+                                    "--preset", preset, "--quiet"},
+                                   which == 1 ? CHAINBREAK_EXE : baseline_exe);
+        h.cores = meter.cores(), h.others = meter.others();
       }
     }
     ++pairs;
-    if (alone.seconds < 0 || render.seconds < 0) break;
-    state.SetIterationTime(alone.seconds + render.seconds);
+    if (alone.seconds < 0 || render.seconds < 0 || (baseline_exe && baseline.seconds < 0)) break;
+    state.SetIterationTime(alone.seconds + render.seconds + std::max(0.0, baseline.seconds));
   }
   // The same clip as the frames in memory: the sidecar must say kFrames frames at 1080p.
   std::ifstream in(dir / "anomalous_breaking.json");
@@ -380,6 +390,8 @@ void BM_Video(benchmark::State& state) {
   if (alone.seconds < 0) return state.SkipWithError("libx264 failed");
   if (render.seconds < 0)
     return state.SkipWithError("chainbreak render failed (run it by hand to see why)");
+  if (baseline_exe && baseline.seconds < 0)
+    return state.SkipWithError("the baseline's render failed (CHAINBREAK_BENCH_BASELINE)");
   if (sidecar.str().find("\"frames\":" + std::to_string(kFrames) + ",") == std::string::npos ||
       sidecar.str().find("\"width\":1920,\"height\":1080") == std::string::npos)
     return state.SkipWithError("the render made another clip than the benchmark's frames");
@@ -399,6 +411,13 @@ void BM_Video(benchmark::State& state) {
   g_values["x264_cpu/" + p].push_back(alone.cores / fx);  // CPU seconds per frame
   g_values["render_cpu/" + p].push_back(render.cores / fr);
   g_values["others/" + p].push_back(std::max(alone.others, render.others));
+  if (baseline_exe) {
+    const double fb = kFrames / baseline.seconds;
+    state.counters["baseline_fps"] = fb;
+    state.counters["baseline_ratio"] = fb / fx;
+    g_values["baseline/" + p].push_back(fb);
+    g_values["baseline_ratio/" + p].push_back(fb / fx);
+  }
 }
 
 // The overlay's share of `render`'s frame time (issue goal: <= 15 %): the same clip at the
@@ -463,6 +482,14 @@ void print_summary() {
     std::printf("%-10s %8.1f %8.1f %8.3f %11.1f %11.1f %8.2f\n", p.c_str(), m("x264/" + p),
                 m("render/" + p), m("ratio/" + p), 1e3 * m("x264_cpu/" + p),
                 1e3 * m("render_cpu/" + p), m("others/" + p));
+  if (!g_values["baseline/veryfast"].empty()) {
+    std::printf("baseline (%s), in the same repetitions:\n",
+                std::getenv("CHAINBREAK_BENCH_BASELINE"));
+    std::printf("%-10s %8s %8s %14s\n", "preset", "fps", "ratio", "render/baseline");
+    for (const std::string p : kPresets)
+      std::printf("%-10s %8.1f %8.3f %14.3f\n", p.c_str(), m("baseline/" + p),
+                  m("baseline_ratio/" + p), m("ratio/" + p) / m("baseline_ratio/" + p));
+  }
   std::printf(
       "render at veryfast: %.1f frames/s with the overlay, %.1f without: the overlay "
       "takes %.1f %% of the frame time\n",
