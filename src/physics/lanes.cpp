@@ -29,6 +29,7 @@ struct Lane {
   std::size_t next_kick = 0;
   double ta = 0.0, tb = 0.0;
   bool end_is_breakpoint = false;
+  double p_max = 0.0, m_max = 0.0;  // max_j |phi_j|, |dphi_j/dtau| now (at rest: 0)
 };
 
 // The arrays of lanes_interval, (beads + 2) rows of kLanes doubles each.
@@ -68,11 +69,13 @@ void begin_step(Lane& lane) {
   lane.from = t0;
 }
 
-// Integrator::apply_kicks: bead N's velocity jumps by each kick up to `up_to`.
+// Integrator::apply_kicks: bead N's velocity jumps by each kick up to `up_to` (and the
+// largest spring rate is no longer known).
 void apply_kicks(Lane& lane, double up_to, double& v_end) {
   const auto& kicks = lane.job.forcing.kicks;
   while (lane.next_kick < kicks.size() && kicks[lane.next_kick].tau <= up_to) {
     v_end += kicks[lane.next_kick].strength;
+    lane.m_max = std::numeric_limits<double>::infinity();
     ++lane.next_kick;
   }
 }
@@ -128,7 +131,8 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
   Lane lanes[kLanes];
   constexpr double kInf = std::numeric_limits<double>::infinity();
   alignas(64) double g2[kLanes], h[kLanes], h2[kLanes], h6[kLanes], f0[kLanes], f1[kLanes],
-      f2[kLanes], slack[kLanes], threshold[kLanes], stretch[kLanes];
+      f2[kLanes], slack[kLanes], threshold[kLanes], p0[kLanes], m0[kLanes], p1[kLanes],
+      m1[kLanes];
   alignas(64) int bad[kLanes], near[kLanes];
 
   // Gives lane k the next job, or leaves it idle (at rest, h = 0: it stays at +0).
@@ -162,8 +166,8 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
   detail::LaneInterval in;
   in.beads = beads;
   in.g2 = g2, in.h = h, in.h2 = h2, in.h6 = h6, in.f0 = f0, in.f1 = f1, in.f2 = f2;
-  in.slack = slack, in.threshold = threshold, in.stretch_only = stretch;
-  in.bad = bad, in.near = near;
+  in.slack = slack, in.threshold = threshold, in.p_start = p0, in.m_start = m0;
+  in.bad = bad, in.near = near, in.p_end = p1, in.m_end = m1;
   const int end_row = beads * kLanes;
   while (std::any_of(std::begin(lanes), std::end(lanes), [](const Lane& l) { return l.active; })) {
     if (cancel && cancel->load(std::memory_order_relaxed)) return false;
@@ -171,7 +175,7 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
     for (int k = 0; k < kLanes; ++k) {
       Lane& lane = lanes[k];
       if (!lane.active) {
-        g2[k] = h[k] = h2[k] = h6[k] = f0[k] = f1[k] = f2[k] = slack[k] = stretch[k] = 0.0;
+        g2[k] = h[k] = h2[k] = h6[k] = f0[k] = f1[k] = f2[k] = slack[k] = p0[k] = m0[k] = 0.0;
         threshold[k] = kInf;
         continue;
       }
@@ -192,7 +196,8 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
       f2[k] = f(lane.end_is_breakpoint ? std::nextafter(tb, ta) : tb);
       slack[k] = (4.0 / 27.0) * h[k];
       threshold[k] = lane.checks ? lane.job.params.threshold : kInf;
-      stretch[k] = lane.job.params.break_on == BreakMode::Stretch ? 1.0 : 0.0;
+      p0[k] = lane.p_max;
+      m0[k] = lane.m_max;
     }
     in.x0 = a.x0.data(), in.v0 = a.v0.data();
     in.xa = a.xa.data(), in.va = a.va.data(), in.xb = a.xb.data(), in.vb = a.vb.data();
@@ -216,6 +221,8 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
         ended[k] = true;
         continue;
       }
+      lane.p_max = p1[k];
+      lane.m_max = m1[k];
       lane.from = lane.tb;
       if (++lane.cut < lane.cuts.size()) continue;
       lane.cuts.clear();

@@ -18,12 +18,15 @@ struct LaneInterval {
   double *sx = nullptr, *sv = nullptr;                                // K1 + 2 K2 + 2 K3
   double *xn = nullptr, *vn = nullptr;                                // the new state
   // Per lane: 2 gamma, the interval's length h, h/2, h/6, the force at its start, middle and
-  // end, the Hermite slack (4/27) h, the threshold and the break rule (1: stretch only).
+  // end, the Hermite slack (4/27) h, the threshold (+inf: no checks), and the largest |phi_j|
+  // and |dphi_j/dtau| over the springs at the start (+inf when unknown, e.g. after a kick).
   const double *g2 = nullptr, *h = nullptr, *h2 = nullptr, *h6 = nullptr;
   const double *f0 = nullptr, *f1 = nullptr, *f2 = nullptr;
-  const double *slack = nullptr, *threshold = nullptr, *stretch_only = nullptr;
-  // Out, per lane: 1 if a new value is not finite; 1 if a spring may cross its threshold.
+  const double *slack = nullptr, *threshold = nullptr, *p_start = nullptr, *m_start = nullptr;
+  // Out, per lane: 1 if a new value may not be finite; 1 if a spring may reach its threshold
+  // (then the springs are tested one by one); the largest |phi_j|, |dphi_j/dtau| at the end.
   int *bad = nullptr, *near = nullptr;
+  double *p_end = nullptr, *m_end = nullptr;
 };
 
 using LanesKernel = void (*)(const LaneInterval& in);
