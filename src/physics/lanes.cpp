@@ -35,9 +35,9 @@ struct Lane {
 // The arrays of lanes_interval, (beads + 2) rows of kLanes doubles each.
 struct LaneArrays {
   int rows;
-  std::vector<double> x0, v0, xa, va, xb, vb, sx, sv, xn, vn;
+  std::vector<double> x0, v0, sx, sv, xn, vn;
   explicit LaneArrays(int beads) : rows(beads + 2) {
-    for (auto* a : {&x0, &v0, &xa, &va, &xb, &vb, &sx, &sv, &xn, &vn})
+    for (auto* a : {&x0, &v0, &sx, &sv, &xn, &vn})
       a->assign(static_cast<std::size_t>(rows) * kLanes, 0.0);
   }
   // A lane starts from rest, Integrator's initial state.
@@ -200,7 +200,6 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
       m0[k] = lane.m_max;
     }
     in.x0 = a.x0.data(), in.v0 = a.v0.data();
-    in.xa = a.xa.data(), in.va = a.va.data(), in.xb = a.xb.data(), in.vb = a.vb.data();
     in.sx = a.sx.data(), in.sv = a.sv.data(), in.xn = a.xn.data(), in.vn = a.vn.data();
     kernel(in);
 

@@ -13,6 +13,7 @@
 #endif
 
 namespace cb::detail::avx2 {
+constexpr int kVec = 4;  // doubles a register
 #include "physics/lanes_kernel.inc"
 }  // namespace cb::detail::avx2
 

@@ -13,6 +13,7 @@
 #endif
 
 namespace cb::detail::avx512 {
+constexpr int kVec = 8;  // doubles a register
 #include "physics/lanes_kernel.inc"
 }  // namespace cb::detail::avx512
 

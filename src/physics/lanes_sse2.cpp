@@ -6,5 +6,6 @@
 #include "physics/lanes_interval.h"
 
 namespace cb::detail::sse2 {
+constexpr int kVec = 2;  // doubles a register
 #include "physics/lanes_kernel.inc"
 }  // namespace cb::detail::sse2
