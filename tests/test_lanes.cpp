@@ -92,6 +92,15 @@ std::vector<Value> chain_values() {
   kicks.drive.times = {0.0, 3.005, 7.77};
   kicks.drive.strengths = {0.4, -0.3, 0.5};
   out.push_back(kicks);
+  Value early = kicks;  // a drive started before tau = 0: a kick due at the first step
+  early.drive.t0 = -2.0;
+  early.drive.times = {1.0, 2.0, 4.5};
+  out.push_back(early);
+  Value table = base;  // a breakpoint at every point, off the step grid
+  table.chain.threshold = 0.7;
+  table.drive.type = cb::DriveType::Table;
+  table.drive.table = {{0.0, 0.0}, {0.3333, 0.4}, {1.7771, 0.9}, {2.5, 0.2}, {9.0, 0.6}};
+  out.push_back(table);
   Value sine = base;
   sine.chain.threshold = 1.2;
   sine.chain.gamma = 0.01;
