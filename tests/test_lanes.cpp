@@ -42,8 +42,7 @@ std::map<std::size_t, cb::LaneEnd> in_lanes(const std::vector<Value>& values, cb
   auto take = [&]() -> std::optional<cb::LaneJob> {
     if (next == values.size()) return std::nullopt;
     const Value& v = values[next];
-    cb::LaneJob job{next++, v.chain, cb::make_forcing(v.drive), v.dt,
-                    std::llround(v.t_end / v.dt)};
+    cb::LaneJob job{next++, v.chain, cb::make_forcing(v.drive), v.dt, std::llround(v.t_end / v.dt)};
     return job;
   };
   auto done = [&](std::size_t id, const cb::LaneEnd& e) {
@@ -134,7 +133,9 @@ std::vector<Value> ball_values() {
   return out;
 }
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool same_bits(double a, double b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
 
 }  // namespace
 
@@ -161,8 +162,7 @@ TEST_CASE("ensemble lanes give every value's first break bit-identical to Integr
   }
 }
 
-TEST_CASE("a lane whose state stops being finite ends Failed, the sweep reports why",
-          "[lanes]") {
+TEST_CASE("a lane whose state stops being finite ends Failed, the sweep reports why", "[lanes]") {
   Value v;
   v.chain.threshold = 3.0;
   v.dt = 3.0;  // beyond RK4's stability limit for N = 30 (about 1.39): |R| ~ 70 a step

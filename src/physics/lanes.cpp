@@ -20,12 +20,12 @@ using detail::kLanes;
 struct Lane {
   bool active = false;
   LaneJob job;
-  bool checks = false;      // springs can break (the fused kernel's threshold test)
-  bool pull = false;        // the pull string can break
-  std::int64_t step = 0;    // steps done
-  std::vector<double> cuts; // the current step's interval ends (empty: between steps)
-  std::size_t cut = 0;      // the interval being integrated
-  double from = 0.0;        // its start
+  bool checks = false;       // springs can break (the fused kernel's threshold test)
+  bool pull = false;         // the pull string can break
+  std::int64_t step = 0;     // steps done
+  std::vector<double> cuts;  // the current step's interval ends (empty: between steps)
+  std::size_t cut = 0;       // the interval being integrated
+  double from = 0.0;         // its start
   std::size_t next_kick = 0;
   double ta = 0.0, tb = 0.0;
   bool end_is_breakpoint = false;
@@ -110,8 +110,8 @@ int first_crossing(const Lane& lane, const LaneArrays& a, int k, bool near, doub
   if (lane.pull) {
     const Forcing& f = lane.job.forcing;
     const double f_end = f(lane.end_is_breakpoint ? std::nextafter(tb, ta) : tb);
-    const double t = detail::first_time_at_least(f.f ? f.f : [](double) { return 0.0; }, f_end,
-                                                 ta, tb, p.threshold);
+    const double t = detail::first_time_at_least(
+        f.f ? f.f : [](double) { return 0.0; }, f_end, ta, tb, p.threshold);
     if (t >= 0.0 && t <= first) {
       first = t;
       spring = 0;
@@ -131,8 +131,7 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
   Lane lanes[kLanes];
   constexpr double kInf = std::numeric_limits<double>::infinity();
   alignas(64) double g2[kLanes], h[kLanes], h2[kLanes], h6[kLanes], f0[kLanes], f1[kLanes],
-      f2[kLanes], slack[kLanes], threshold[kLanes], p0[kLanes], m0[kLanes], p1[kLanes],
-      m1[kLanes];
+      f2[kLanes], slack[kLanes], threshold[kLanes], p0[kLanes], m0[kLanes], p1[kLanes], m1[kLanes];
   alignas(64) int bad[kLanes], near[kLanes];
 
   // Gives lane k the next job, or leaves it idle (at rest, h = 0: it stays at +0).

@@ -1,4 +1,5 @@
-// The ensemble kernel (lanes_kernel.inc) compiled for AVX-512F with 512-bit vectors (one register a row of lanes).
+// The ensemble kernel (lanes_kernel.inc) compiled for AVX-512F with 512-bit vectors (one register a
+// row of lanes).
 #include <algorithm>
 #include <cmath>
 #include <limits>

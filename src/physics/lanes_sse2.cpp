@@ -1,4 +1,5 @@
-// The ensemble kernel (lanes_kernel.inc) compiled for the x86-64 baseline: no pragma, every x86-64 CPU runs it.
+// The ensemble kernel (lanes_kernel.inc) compiled for the x86-64 baseline: no pragma, every x86-64
+// CPU runs it.
 #include <algorithm>
 #include <cmath>
 #include <limits>

@@ -52,17 +52,22 @@ void sweep(benchmark::State& state, const std::string& solver) {
   state.counters["values"] = static_cast<double>(scenes.size());
   state.counters["broke"] = broke;
 }
-void BM_SweepRk4(benchmark::State& state) { sweep(state, "rk4"); }
-void BM_SweepExact(benchmark::State& state) { sweep(state, "exact"); }
+void BM_SweepRk4(benchmark::State& state) {
+  sweep(state, "rk4");
+}
+void BM_SweepExact(benchmark::State& state) {
+  sweep(state, "exact");
+}
 
 // The values one by one through Integrator (what the rk4 sweep did before lanes).
 void BM_SweepRk4Single(benchmark::State& state) {
   const auto scenes = sweep_scenes();
   const int jobs = static_cast<int>(state.range(0));
   for (auto _ : state) {
-    const auto results = cb::parallel_first_breaks(
-        static_cast<int>(scenes.size()), jobs,
-        [&](int i) { return cb::sweep_first_break(scenes[static_cast<std::size_t>(i)], "rk4", nullptr); });
+    const auto results =
+        cb::parallel_first_breaks(static_cast<int>(scenes.size()), jobs, [&](int i) {
+          return cb::sweep_first_break(scenes[static_cast<std::size_t>(i)], "rk4", nullptr);
+        });
     benchmark::DoNotOptimize(results.data());
   }
 }
