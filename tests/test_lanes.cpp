@@ -6,12 +6,16 @@
 #include <cstring>
 #include <map>
 
+#include <nlohmann/json.hpp>
+#include <sstream>
+
 #include "app/sweep_values.h"
 #include "drive/drive.h"
 #include "physics/integrator.h"
 #include "physics/lanes.h"
 #include "physics/run_loop.h"
 #include "physics/simd.h"
+#include "test_support.h"
 
 namespace {
 
@@ -216,4 +220,46 @@ TEST_CASE("the rk4 sweep in lanes matches the values run one by one", "[lanes]")
     CHECK(got[i].spring == want.spring);
     CHECK(same_bits(got[i].tau, want.tau));
   }
+}
+
+TEST_CASE("sweep --solver rk4 gives each value's first spring and tau as `run` prints them",
+          "[lanes][cli]") {
+  // The user's view of the claim: `chainbreak run` on each grid point of a beta x gamma sweep of
+  // the default scene (energy books on, as users run it) prints the same first break, to the
+  // last digit of the shortest round-trip text, as the sweep's CSV row (ensemble lanes).
+  const cb::test::TempDir dir;
+  const std::string scene = std::string(CHAINBREAK_SCENES) + "/anomalous_breaking.toml";
+  const auto sweep = cb::test::run_chainbreak(
+      "sweep " + scene +
+      " --solver rk4 --values chain.gamma=0,0.015 --vary drive.beta=0.01:0.6:5:log --quiet --csv " +
+      dir.file("s.csv"));
+  INFO(sweep.err);
+  REQUIRE(sweep.status == 0);
+  std::istringstream csv(cb::test::slurp(dir.file("s.csv")));
+  std::string line;
+  std::getline(csv, line);
+  REQUIRE(line == "chain.gamma,drive.beta,spring,tau");
+  int rows = 0;
+  while (std::getline(csv, line)) {
+    std::vector<std::string> cell;
+    std::istringstream fields(line);
+    for (std::string c; std::getline(fields, c, ',');) cell.push_back(c);
+    if (cell.size() == 3) cell.emplace_back();  // nothing broke: empty tau
+    REQUIRE(cell.size() == 4);
+    INFO(line);
+    const auto run = cb::test::run_chainbreak("run " + scene + " --set chain.gamma=" + cell[0] +
+                                              " --set drive.beta=" + cell[1]);
+    REQUIRE(run.status == 0);
+    const auto summary = nlohmann::json::parse(run.out);
+    const auto& breaks = summary["breaks"];
+    if (cell[2].empty()) {
+      CHECK(breaks.empty());
+    } else {
+      REQUIRE(!breaks.empty());
+      CHECK(std::to_string(breaks[0]["spring"].get<int>()) == cell[2]);
+      CHECK(same_bits(breaks[0]["tau"].get<double>(), std::stod(cell[3])));
+    }
+    ++rows;
+  }
+  CHECK(rows == 10);
 }
