@@ -28,12 +28,14 @@
 #include <cstdint>
 #include <cstdio>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "bench_support.h"
 #include "drive/drive.h"
 #include "physics/integrator.h"
+#include "physics/lanes.h"
 #include "physics/simd.h"
 #include "physics/worker_pool.h"
 #include "rk4_workload.h"
@@ -82,6 +84,37 @@ void BM_FusedRK4(benchmark::State& state) {
   benchmark::DoNotOptimize(sim.state().psi.back());
   set_counters(state, p.beads, steps, 32);
   state.counters["subnormal"] = static_cast<double>(beads_subnormal(fused.psi(), fused.vel()));
+}
+
+// Args: {beads, simd}. The ensemble path of `sweep --solver rk4` (physics/lanes.h): eight
+// unbreakable chains side by side, each from rest for steps_per_iteration(N) steps (a chain of
+// 30 beads leaves the subnormal band within ~3000 of its 32768 steps). bead_steps counts every
+// lane's beads, so it compares with one chain's RK4 bead for bead.
+void BM_LanesRK4(benchmark::State& state) {
+  const int beads = static_cast<int>(state.range(0));
+  const auto simd = static_cast<cb::SimdPath>(state.range(1));
+  if (!cb::simd_supported(simd)) {
+    state.SkipWithError((std::string("no ") + cb::simd_name(simd) + " on this CPU").c_str());
+    return;
+  }
+  const int steps = steps_per_iteration(beads);
+  constexpr int kValues = 8;
+  for (auto _ : state) {
+    int given = 0;
+    auto next = [&]() -> std::optional<cb::LaneJob> {
+      if (given == kValues) return std::nullopt;
+      cb::LaneJob job;
+      job.id = static_cast<std::size_t>(given++);
+      job.params.beads = beads;
+      job.params.gamma = kGamma;
+      job.forcing = ramp_forcing();
+      job.dt = kDt;
+      job.last_step = steps;
+      return job;
+    };
+    cb::run_first_breaks_in_lanes(beads, next, [](std::size_t, const cb::LaneEnd&) {}, simd);
+  }
+  set_counters(state, std::int64_t{beads} * kValues, steps, 32);
 }
 
 // Args: {beads}. One thread, this file's flags (the physics core's: baseline x86-64).
@@ -174,6 +207,7 @@ BENCHMARK(BM_PlainRK4)
     ->Arg(1'000'000)
     ->Arg(10'000'000)
     ->Apply(common);
+BENCHMARK(BM_LanesRK4)->ArgNames({"N", "simd"})->ArgsProduct({{30, 1'000}, {0, 1, 2}})->Apply(common);
 BENCHMARK(BM_FusedFromRest)->ArgNames({"N", "ftz"})->ArgsProduct({{1'000}, {0, 1}})->Apply(common);
 BENCHMARK(BM_TriadThreads)->Args({10'000'000, 2})->Apply(common);
 // Every instruction set at every N on one thread; two threads only where the Integrator

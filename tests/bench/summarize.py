@@ -32,6 +32,8 @@ def medians(bench_json):
             out[("plain", int(args["N"]))] = b["bead_steps"]
         elif fam == "BM_PlainRK4Native":
             out[("native", int(args["N"]))] = b["bead_steps"]
+        elif fam == "BM_LanesRK4":
+            out[("lanes", int(args["N"]), int(args["simd"]))] = b["bead_steps"]
         elif fam == "BM_FusedRK4":
             key = ("fused", int(args["N"]), int(args["threads"]), int(args["breakable"]),
                    int(args["simd"]))
@@ -74,6 +76,13 @@ def main():
         if brk and unb:
             print(f"- fused {ISAS[i]}, N = 1,000,000, 1 thread, breakable (threshold 1e300): "
                   f"{brk / M:.1f} M bead-steps/s, {brk / unb:.2f} x the unbreakable chain")
+    for n in (30, 1_000):
+        lanes = {ISAS[i]: m[("lanes", n, i)] for i in range(3) if ("lanes", n, i) in m}
+        plain = m.get(("plain", n))
+        if lanes and plain:
+            print(f"- ensemble lanes (8 chains, sweep --solver rk4), N = {n:,}: "
+                  + ", ".join(f"{k} {v / M:.1f}" for k, v in lanes.items())
+                  + f" M bead-steps/s; best / plain {max(lanes.values()) / plain:.2f}")
     for n, v in sorted(numpy.items(), key=lambda kv: int(kv[0])):
         print(f"- numpy, N = {int(n):,}: {v['median'] / M:.2f} M bead-steps/s")
 

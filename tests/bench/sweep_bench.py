@@ -23,11 +23,26 @@ SCENE = os.path.join(HERE, "..", "..", "scenes", "anomalous_breaking.toml")
 
 
 def sweep(exe, solver, jobs, out):
+    """Wall-clock and CPU (user + sys) seconds of one sweep. CPU time is what to compare on a
+    loaded machine: wall-clock there mostly measures the other processes."""
     cmd = [exe, "sweep", SCENE, "--vary", "drive.beta=0.005:1:420:log", "--solver", solver,
            "--jobs", str(jobs), "--csv", out, "--quiet"]
     t0 = time.perf_counter()
-    subprocess.run(cmd, check=True)
-    return time.perf_counter() - t0
+    proc = subprocess.Popen(cmd)
+    _, status, usage = os.wait4(proc.pid, 0)
+    wall = time.perf_counter() - t0
+    if os.waitstatus_to_exitcode(status) != 0:
+        raise SystemExit(f"sweep_bench: {' '.join(cmd)} failed")
+    proc.returncode = 0
+    return wall, usage.ru_utime + usage.ru_stime
+
+
+def start_cost(exe):
+    """CPU seconds of starting the program (loading its shared libraries), paid by both."""
+    proc = subprocess.Popen([exe, "--version"], stdout=subprocess.DEVNULL)
+    _, _, usage = os.wait4(proc.pid, 0)
+    proc.returncode = 0
+    return usage.ru_utime + usage.ru_stime
 
 
 def springs(path):
@@ -42,22 +57,31 @@ def main():
     ap.add_argument("--jobs", type=int, default=2)
     a = ap.parse_args()
     times = {"rk4": [], "exact": []}
+    cpu = {"rk4": [], "exact": []}
+    startup = []
     with tempfile.TemporaryDirectory() as tmp:
         for r in range(a.repeat):
             outs = {}
             for solver in ("rk4", "exact"):
                 outs[solver] = os.path.join(tmp, f"{solver}.csv")
-                times[solver].append(sweep(a.exe, solver, a.jobs, outs[solver]))
+                wall, used = sweep(a.exe, solver, a.jobs, outs[solver])
+                times[solver].append(wall)
+                cpu[solver].append(used)
+            startup.append(start_cost(a.exe))
             same = springs(outs["rk4"]) == springs(outs["exact"])
-            print(f"repetition {r + 1}: rk4 {times['rk4'][-1]:.3f} s, exact "
-                  f"{times['exact'][-1]:.3f} s, same first springs: {same}")
+            print(f"repetition {r + 1}: rk4 {times['rk4'][-1]:.3f} s (cpu {cpu['rk4'][-1]:.3f}), "
+                  f"exact {times['exact'][-1]:.3f} s (cpu {cpu['exact'][-1]:.3f}), "
+                  f"same first springs: {same}")
             if not same:
                 print("sweep_bench: rk4 and exact disagree on a first-breaking spring",
                       file=sys.stderr)
     m = {k: statistics.median(v) for k, v in times.items()}
+    c = {k: statistics.median(v) for k, v in cpu.items()}
     print(f"CHAINBREAK_SIMD={os.environ.get('CHAINBREAK_SIMD', 'auto')} jobs={a.jobs}: "
-          f"median rk4 {m['rk4']:.3f} s, exact {m['exact']:.3f} s, "
-          f"rk4/exact {m['rk4'] / m['exact']:.2f}")
+          f"median wall rk4 {m['rk4']:.3f} s, exact {m['exact']:.3f} s, "
+          f"rk4/exact {m['rk4'] / m['exact']:.2f}; median cpu rk4 {c['rk4']:.3f} s, "
+          f"exact {c['exact']:.3f} s, rk4/exact {c['rk4'] / c['exact']:.2f}; "
+          f"start-up (--version) cpu {statistics.median(startup):.3f} s, in both")
 
 
 if __name__ == "__main__":

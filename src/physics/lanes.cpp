@@ -1,0 +1,256 @@
+#include "physics/lanes.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "physics/crossing.h"
+#include "physics/lanes_interval.h"
+
+namespace cb {
+
+namespace {
+
+using detail::kLanes;
+
+// One lane's clock and drive: Integrator::step's split points and kicks, kept per lane so lanes
+// at different steps share one kernel call.
+struct Lane {
+  bool active = false;
+  LaneJob job;
+  bool checks = false;       // springs can break (the fused kernel's threshold test)
+  bool pull = false;         // the pull string can break
+  std::int64_t step = 0;     // steps done
+  std::vector<double> cuts;  // the current step's interval ends (empty: between steps)
+  std::size_t cut = 0;       // the interval being integrated
+  double from = 0.0;         // its start
+  std::size_t next_kick = 0;
+  double ta = 0.0, tb = 0.0;
+  bool end_is_breakpoint = false;
+  double p_max = 0.0, m_max = 0.0;  // max_j |phi_j|, |dphi_j/dtau| now (at rest: 0)
+};
+
+// The arrays of lanes_interval, (beads + 2) rows of kLanes doubles each.
+struct LaneArrays {
+  int rows;
+  std::vector<double> x0, v0, sx, sv, xn, vn;
+  explicit LaneArrays(int beads) : rows(beads + 2) {
+    for (auto* a : {&x0, &v0, &sx, &sv, &xn, &vn})
+      a->assign(static_cast<std::size_t>(rows) * kLanes, 0.0);
+  }
+  // A lane starts from rest, Integrator's initial state.
+  void clear_lane(int k) {
+    for (int r = 0; r < rows; ++r) x0[r * kLanes + k] = v0[r * kLanes + k] = 0.0;
+  }
+};
+
+bool on_breakpoint(const Forcing& forcing, double t, double snap) {
+  for (double b : forcing.breakpoints)
+    if (std::abs(b - t) <= snap) return true;
+  return false;
+}
+
+// Integrator::step's split of [t0, t1] at the drive's jumps, kinks and kicks strictly inside.
+void begin_step(Lane& lane) {
+  const double dt = lane.job.dt;
+  const double t0 = static_cast<double>(lane.step) * dt;
+  const double t1 = static_cast<double>(lane.step + 1) * dt;
+  const double snap = 1e-9 * dt;
+  lane.cuts.clear();
+  for (double b : lane.job.forcing.breakpoints)
+    if (b > t0 + snap && b < t1 - snap) lane.cuts.push_back(b);
+  for (const Kick& k : lane.job.forcing.kicks)
+    if (k.tau > t0 + snap && k.tau < t1 - snap) lane.cuts.push_back(k.tau);
+  std::sort(lane.cuts.begin(), lane.cuts.end());
+  lane.cuts.push_back(t1);
+  lane.cut = 0;
+  lane.from = t0;
+}
+
+// Integrator::apply_kicks: bead N's velocity jumps by each kick up to `up_to` (and the
+// largest spring rate is no longer known).
+void apply_kicks(Lane& lane, double up_to, double& v_end) {
+  const auto& kicks = lane.job.forcing.kicks;
+  while (lane.next_kick < kicks.size() && kicks[lane.next_kick].tau <= up_to) {
+    v_end += kicks[lane.next_kick].strength;
+    lane.m_max = std::numeric_limits<double>::infinity();
+    ++lane.next_kick;
+  }
+}
+
+// Integrator::advance_interval's search for the earliest crossing in (ta, tb] of a lane whose
+// interval was integrated: springs by their Hermite cubic (the fused kernel's bound first), then
+// the pull string. Returns the spring (0: the string) and sets `first`, or -1.
+int first_crossing(const Lane& lane, const LaneArrays& a, int k, bool near, double& first) {
+  const ChainParams& p = lane.job.params;
+  const int n = p.beads;
+  const double ta = lane.ta, tb = lane.tb;
+  first = tb + 1.0;
+  int spring = -1;
+  if (lane.checks && near) {
+    constexpr double kHermiteSlack = 4.0 / 27.0;
+    const double slack = kHermiteSlack * (tb - ta);
+    const bool stretch = p.break_on == BreakMode::Stretch;
+    for (int r = 1; r <= n; ++r) {
+      const int i = r * kLanes + k, m = i - kLanes;
+      const double p0 = a.x0[i] - a.x0[m], p1 = a.xn[i] - a.xn[m];
+      const double m0 = a.v0[i] - a.v0[m], m1 = a.vn[i] - a.vn[m];
+      const double reach = stretch ? std::max(p0, p1) : std::max(std::abs(p0), std::abs(p1));
+      if (!(reach + slack * (std::abs(m0) + std::abs(m1)) >= p.threshold)) continue;
+      const double theta =
+          detail::hermite_first_crossing(p0, p1, m0, m1, tb - ta, p.threshold, stretch);
+      if (theta >= 0.0 && (ta + theta < first || (ta + theta == first && r < spring))) {
+        first = ta + theta;
+        spring = r;
+      }
+    }
+  }
+  if (lane.pull) {
+    const Forcing& f = lane.job.forcing;
+    const double f_end = f(lane.end_is_breakpoint ? std::nextafter(tb, ta) : tb);
+    const double t = detail::first_time_at_least(
+        f.f ? f.f : [](double) { return 0.0; }, f_end, ta, tb, p.threshold);
+    if (t >= 0.0 && t <= first) {
+      first = t;
+      spring = 0;
+    }
+  }
+  return spring;
+}
+
+}  // namespace
+
+bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<LaneJob>()>& next,
+                               const std::function<void(std::size_t, const LaneEnd&)>& done,
+                               SimdPath simd, const std::atomic<bool>* cancel) {
+  assert(beads >= 1 && beads <= kMaxLaneBeads);
+  const detail::LanesKernel kernel = detail::lanes_kernel(simd);
+  LaneArrays a(beads);
+  Lane lanes[kLanes];
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  alignas(64) double g2[kLanes], h[kLanes], h2[kLanes], h6[kLanes], f0[kLanes], f1[kLanes],
+      f2[kLanes], slack[kLanes], threshold[kLanes], p0[kLanes], m0[kLanes], p1[kLanes], m1[kLanes];
+  alignas(64) int bad[kLanes], near[kLanes];
+
+  // Gives lane k the next job, or leaves it idle (at rest, h = 0: it stays at +0).
+  bool more = true;
+  auto refill = [&](int k) {
+    Lane& lane = lanes[k];
+    lane.active = false;
+    a.clear_lane(k);
+    while (more) {
+      std::optional<LaneJob> job = next();
+      if (!job) {
+        more = false;
+        break;
+      }
+      assert(job->params.beads == beads);
+      if (job->last_step <= 0) {  // run_until takes no step
+        done(job->id, LaneEnd{});
+        continue;
+      }
+      lane = Lane{};
+      lane.active = true;
+      lane.job = std::move(*job);
+      const ChainParams& p = lane.job.params;
+      lane.checks = p.breakable() && p.threshold > 0.0;
+      lane.pull = p.pull_string && p.breakable();
+      return;
+    }
+  };
+  for (int k = 0; k < kLanes; ++k) refill(k);
+
+  detail::LaneInterval in;
+  in.beads = beads;
+  in.g2 = g2, in.h = h, in.h2 = h2, in.h6 = h6, in.f0 = f0, in.f1 = f1, in.f2 = f2;
+  in.slack = slack, in.threshold = threshold, in.p_start = p0, in.m_start = m0;
+  in.bad = bad, in.near = near, in.p_end = p1, in.m_end = m1;
+  const int end_row = beads * kLanes;
+  while (std::any_of(std::begin(lanes), std::end(lanes), [](const Lane& l) { return l.active; })) {
+    if (cancel && cancel->load(std::memory_order_relaxed)) return false;
+    // Each lane's next interval, as Integrator::step would take it.
+    for (int k = 0; k < kLanes; ++k) {
+      Lane& lane = lanes[k];
+      if (!lane.active) {
+        g2[k] = h[k] = h2[k] = h6[k] = f0[k] = f1[k] = f2[k] = slack[k] = p0[k] = m0[k] = 0.0;
+        threshold[k] = kInf;
+        continue;
+      }
+      if (lane.cuts.empty()) begin_step(lane);
+      const double snap = 1e-9 * lane.job.dt;
+      apply_kicks(lane, lane.from + snap, a.v0[end_row + k]);
+      const Forcing& f = lane.job.forcing;
+      lane.ta = lane.from;
+      lane.tb = lane.cuts[lane.cut];
+      lane.end_is_breakpoint = on_breakpoint(f, lane.tb, snap);
+      const double ta = lane.ta, tb = lane.tb;
+      h[k] = tb - ta;
+      h2[k] = 0.5 * h[k];
+      h6[k] = h[k] / 6.0;
+      g2[k] = 2.0 * lane.job.params.gamma;
+      f0[k] = f(ta);
+      f1[k] = f(0.5 * (ta + tb));
+      f2[k] = f(lane.end_is_breakpoint ? std::nextafter(tb, ta) : tb);
+      slack[k] = (4.0 / 27.0) * h[k];
+      threshold[k] = lane.checks ? lane.job.params.threshold : kInf;
+      p0[k] = lane.p_max;
+      m0[k] = lane.m_max;
+    }
+    in.x0 = a.x0.data(), in.v0 = a.v0.data();
+    in.sx = a.sx.data(), in.sv = a.sv.data(), in.xn = a.xn.data(), in.vn = a.vn.data();
+    kernel(in);
+
+    // Every lane's new state becomes the current one; a lane that ended is cleared after.
+    bool ended[kLanes] = {};
+    for (int k = 0; k < kLanes; ++k) {
+      Lane& lane = lanes[k];
+      if (!lane.active) continue;
+      if (bad[k] != 0) {
+        done(lane.job.id, LaneEnd{LaneEnd::Kind::Failed, {}});
+        ended[k] = true;
+        continue;
+      }
+      double first = 0.0;
+      const int spring = first_crossing(lane, a, k, near[k] != 0, first);
+      if (spring >= 0) {
+        done(lane.job.id, LaneEnd{LaneEnd::Kind::Broke, {spring, first, lane.step + 1}});
+        ended[k] = true;
+        continue;
+      }
+      lane.p_max = p1[k];
+      lane.m_max = m1[k];
+      lane.from = lane.tb;
+      if (++lane.cut < lane.cuts.size()) continue;
+      lane.cuts.clear();
+      if (++lane.step >= lane.job.last_step) {
+        done(lane.job.id, LaneEnd{});
+        ended[k] = true;
+      }
+    }
+    a.x0.swap(a.xn);
+    a.v0.swap(a.vn);
+    for (int k = 0; k < kLanes; ++k)
+      if (ended[k]) refill(k);
+  }
+  return true;
+}
+
+namespace detail {
+
+LanesKernel lanes_kernel(SimdPath path) {
+  switch (path) {
+    case SimdPath::Avx512:
+      return avx512::lanes_interval;
+    case SimdPath::Avx2:
+      return avx2::lanes_interval;
+    case SimdPath::Sse2:
+      break;
+  }
+  return sse2::lanes_interval;
+}
+
+}  // namespace detail
+
+}  // namespace cb
