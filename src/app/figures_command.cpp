@@ -89,16 +89,16 @@ int figures_command(const FiguresOptions& o) {
       if (!only.empty() && !only.count(entry.name)) continue;
       const auto left = [&] {
         return "after " + std::to_string(done) + " of " + std::to_string(total) +
-               " figures (their PNG and CSV are complete)";
+               " figures (each of their files is complete)";
       };
       if (g_interrupted) return interrupted_status(left());
       const Figure figure = entry.build(options);
       if (g_interrupted) return interrupted_status(left());  // the figure may be incomplete
       const std::filesystem::path stem = std::filesystem::path(o.out_dir) / entry.name;
-      for (FigureFormat format : *formats) {
+      // A figure's files go out together (a fraction of a second): an interrupt between
+      // them would leave a PNG without its CSV, so it is honoured after the last.
+      for (FigureFormat format : *formats)
         std::printf("%s\n", write_figure(figure, theme, format, stem).c_str());
-        if (g_interrupted) return interrupted_status(left());
-      }
       OutputFile csv(stem.string() + ".csv");
       csv.write(figure_csv(figure));
       csv.commit();
