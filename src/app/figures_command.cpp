@@ -12,6 +12,7 @@
 #include "figures/figure_specs.h"
 #include "output/frame_writer.h"
 #include "output/output_file.h"
+#include "output/output_lock.h"
 #include "output/png_writer.h"
 #include "theme/fonts.h"
 
@@ -76,6 +77,9 @@ int figures_command(const FiguresOptions& o) {
   // The typeface first: a machine without it fails at once, not after the computing.
   for (FontFace face : {FontFace::Sans, FontFace::Bold}) font_path(face);
   make_output_dir(o.out_dir);
+  // One `figures` per folder at a time (issue #12, row 9): the PNG/SVG/PDF and the CSV of a
+  // figure then come from one run.
+  const OutputLock lock((std::filesystem::path(o.out_dir) / "figures").string());
   FigureOptions options;
   options.jobs = o.jobs;
   options.stop = &g_interrupted;
