@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <set>
+#include <vector>
 
 #include "app/commands.h"
 #include "app/figure_csv.h"
@@ -99,13 +100,20 @@ int figures_command(const FiguresOptions& o) {
       const Figure figure = entry.build(options);
       if (g_interrupted) return interrupted_status(left());  // the figure may be incomplete
       const std::filesystem::path stem = std::filesystem::path(o.out_dir) / entry.name;
+      // A figure is all its files or none: a signal between them removes the ones written
+      // (the message promises that every PNG left has its CSV).
+      std::vector<std::string> written;
       for (FigureFormat format : *formats) {
-        std::printf("%s\n", write_figure(figure, theme, format, stem).c_str());
-        if (g_interrupted) return interrupted_status(left());
+        written.push_back(write_figure(figure, theme, format, stem));
+        if (g_interrupted) {
+          for (const std::string& path : written) std::filesystem::remove(path);
+          return interrupted_status(left());
+        }
       }
       OutputFile csv(stem.string() + ".csv");
       csv.write(figure_csv(figure));
       csv.commit();
+      for (const std::string& path : written) std::printf("%s\n", path.c_str());
       std::printf("%s.csv\n", stem.c_str());
       std::fflush(stdout);
       progress.update(++done);
