@@ -120,6 +120,56 @@ TEST_CASE("A record reads back as written", "[cluster]") {
   CHECK_THROWS(parse_record("{\"scene\": 1}"));
 }
 
+TEST_CASE("A record is held to the sweep's limits before merge sizes anything by it",
+          "[cluster][hostile]") {
+  // Seeds of tests/fuzz/corpus/fuzz_merge: a record is input like any file in the folder.
+  ShardRecord r;
+  r.scene_hash = "h";
+  r.solver = "rk4";
+  add_axis(r.grid, parse_vary("chain.threshold=1:10:10"));
+  r.header = r.grid.csv_header();
+  r.shard = {1, 1};
+  r.points = {0, 10};
+  CHECK_NOTHROW(parse_record(record_json(r)));
+  // An axis without values: Grid::point would divide by its count of 0.
+  ShardRecord empty = r;
+  empty.grid.axes.push_back({"chain.gamma", {}, "--values chain.gamma="});
+  empty.points = {0, 0};
+  CHECK_THROWS_WITH(parse_record(record_json(empty)),
+                    Catch::Contains("axis 'chain.gamma' has no values"));
+  // 40 axes of 2 values: 2^40 points, for which check_coverage allocated one entry each.
+  ShardRecord huge = r;
+  huge.grid.axes.clear();
+  for (int k = 0; k < 40; ++k)
+    huge.grid.axes.push_back({"k" + std::to_string(k), {0.0, 1.0}, "k" + std::to_string(k)});
+  huge.points = {0, 1};
+  CHECK_THROWS_WITH(parse_record(record_json(huge)),
+                    Catch::Contains("the grid has more than 1000000 points"));
+  // Shard 0/0 and 3/2 are not shards.
+  for (const Shard bad : {Shard{0, 0}, Shard{3, 2}}) {
+    ShardRecord s = r;
+    s.shard = bad;
+    CHECK_THROWS_WITH(parse_record(record_json(s)), Catch::Contains("is not I/S with 1 <= I <= S"));
+  }
+}
+
+TEST_CASE("A shard CSV with more rows than its record is refused without reading them all",
+          "[cluster][hostile]") {
+  ShardRecord r;
+  r.scene_hash = "h";
+  r.solver = "rk4";
+  add_axis(r.grid, parse_vary("chain.threshold=1:3:3"));
+  r.header = r.grid.csv_header();
+  r.shard = {1, 1};
+  r.points = {0, 3};
+  const std::string rows = "1,0,1\n2,0,1\n3,0,1\n";
+  CHECK(parse_shard_file("s.csv", record_json(r), r.header + "\n" + rows).rows.size() == 3);
+  CHECK_THROWS_WITH(parse_shard_file("s.csv", record_json(r), r.header + "\n" + rows + "4,0,1\n"),
+                    Catch::Contains("s.csv: more rows than its record's points 0 to 3 (3)"));
+  CHECK_THROWS_WITH(parse_shard_file("s.csv", record_json(r), r.header + "\n1,0,1\n"),
+                    Catch::Contains("s.csv: fewer rows"));
+}
+
 TEST_CASE("Coverage finds missing and duplicated points", "[cluster]") {
   ShardRecord base;
   base.scene_hash = "h";

@@ -206,6 +206,32 @@ TEST_CASE("run --dry-run prints the estimate and writes nothing", "[hardening][c
   CHECK(dir.names().empty());
 }
 
+TEST_CASE("sweep checks its memory before building any point", "[hardening][cli]") {
+  // 10^8 beads with the exact solver: 1.6e17 B of N x N tables per run (resources.cpp,
+  // exact_table_bytes), far past any machine. Without the check the exact solver's first
+  // allocation failed (std::bad_alloc, status 1) after every point was built.
+  cb::test::TempDir dir;
+  const auto r = run_chainbreak("sweep " + scene_file("anomalous_breaking.toml") +
+                                " --set chain.beads=100000000 --solver exact --jobs 1 "
+                                "--values chain.threshold=1,2 -q --csv " +
+                                dir.file("s.csv"));
+  INFO(r.err);
+  CHECK(r.status == 2);
+  CHECK_THAT(r.err, Contains("sweep ") &&
+                        Contains("of memory (exact tables and state of 1 run(s) "
+                                 "at once 160 PB") &&
+                        Contains("use fewer beads (chain.beads), fewer --jobs"));
+  // A varied chain.beads is sized by its largest value: 10 and 10^8 beads with RK4 and 1 job
+  // need 4 GB, 10 and 10^10 beads would need 400 GB.
+  const auto big =
+      run_chainbreak("sweep " + scene_file("anomalous_breaking.toml") +
+                     " --jobs 1 --values chain.beads=10,10000000000 -q --csv " + dir.file("b.csv"));
+  INFO(big.err);
+  CHECK(big.status == 2);
+  CHECK_THAT(big.err, Contains("RK4 state of 1 run(s) at once 400 GB"));
+  CHECK(dir.names().empty());
+}
+
 TEST_CASE("row 3: a table drive from /dev/zero or an oversized file is refused", "[hardening]") {
   using namespace cb::scene_test;
   const std::string scene =

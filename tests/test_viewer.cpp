@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "output/image.h"
+#include "output/output_lock.h"
 #include "output/png_writer.h"
 #include "scene/scene.h"
 #include "test_support.h"
@@ -158,6 +159,23 @@ TEST_CASE("record writes the session as an MP4", "[viewer][xvfb]") {
   CHECK(video.frames == 12);
   CHECK(video.width == 640);
   CHECK(video.height == 360);
+}
+
+TEST_CASE("record refuses a video that another chainbreak is writing", "[viewer][xvfb][lock]") {
+  // Issue #12 row 9: the recorder takes the lock `render` takes on X.mp4 (its X.json name),
+  // so the two cannot rename their videos over one another.
+  if (skip_without_xvfb()) return;
+  TempDir dir("chainbreak-view");
+  write_file(dir.file("s.txt"), "0 play\n0 record " + dir.file("session.mp4") + "\n5 quit\n");
+  const cb::OutputLock other(dir.file("session.json"));
+  const auto view =
+      view_under_xvfb(kScene + " " + kSets + " --no-overlay -q l --script " + dir.file("s.txt"));
+  INFO(view.err);
+  CHECK(view.status == 1);  // a script's failed action (test below)
+  CHECK_THAT(view.err, Catch::Contains("frame 0: record failed") &&
+                           Catch::Contains("another chainbreak is writing this output now"));
+  // No video, nor the encoder's temporary: only the script and the holder's lock file.
+  CHECK(dir.names() == std::vector<std::string>{".session.json.lock", "s.txt"});
 }
 
 #endif  // CHAINBREAK_VIEWER_EXE

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <set>
+#include <vector>
 
 #include "app/commands.h"
 #include "app/figure_csv.h"
@@ -12,6 +13,7 @@
 #include "figures/figure_specs.h"
 #include "output/frame_writer.h"
 #include "output/output_file.h"
+#include "output/output_lock.h"
 #include "output/png_writer.h"
 #include "theme/fonts.h"
 
@@ -76,6 +78,9 @@ int figures_command(const FiguresOptions& o) {
   // The typeface first: a machine without it fails at once, not after the computing.
   for (FontFace face : {FontFace::Sans, FontFace::Bold}) font_path(face);
   make_output_dir(o.out_dir);
+  // One `figures` per folder at a time (issue #12, row 9): the PNG/SVG/PDF and the CSV of a
+  // figure then come from one run.
+  const OutputLock lock((std::filesystem::path(o.out_dir) / "figures").string());
   FigureOptions options;
   options.jobs = o.jobs;
   options.stop = &g_interrupted;
@@ -89,19 +94,26 @@ int figures_command(const FiguresOptions& o) {
       if (!only.empty() && !only.count(entry.name)) continue;
       const auto left = [&] {
         return "after " + std::to_string(done) + " of " + std::to_string(total) +
-               " figures (each of their files is complete)";
+               " figures (their PNG and CSV are complete)";
       };
       if (g_interrupted) return interrupted_status(left());
       const Figure figure = entry.build(options);
       if (g_interrupted) return interrupted_status(left());  // the figure may be incomplete
       const std::filesystem::path stem = std::filesystem::path(o.out_dir) / entry.name;
-      // A figure's files go out together (a fraction of a second): an interrupt between
-      // them would leave a PNG without its CSV, so it is honoured after the last.
-      for (FigureFormat format : *formats)
-        std::printf("%s\n", write_figure(figure, theme, format, stem).c_str());
+      // A figure is all its files or none: a signal between them removes the ones written
+      // (the message promises that every PNG left has its CSV).
+      std::vector<std::string> written;
+      for (FigureFormat format : *formats) {
+        written.push_back(write_figure(figure, theme, format, stem));
+        if (g_interrupted) {
+          for (const std::string& path : written) std::filesystem::remove(path);
+          return interrupted_status(left());
+        }
+      }
       OutputFile csv(stem.string() + ".csv");
       csv.write(figure_csv(figure));
       csv.commit();
+      for (const std::string& path : written) std::printf("%s\n", path.c_str());
       std::printf("%s.csv\n", stem.c_str());
       std::fflush(stdout);
       progress.update(++done);

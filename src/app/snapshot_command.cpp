@@ -15,6 +15,7 @@
 #include "app/snapshot_images.h"
 #include "app/zoom.h"
 #include "output/frame_writer.h"
+#include "output/output_lock.h"
 #include "output/png_writer.h"
 #include "overlay/overlay.h"
 #include "physics/integrator.h"
@@ -249,6 +250,9 @@ int snapshot_command(const SnapshotOptions& o) {
   request.stop = &g_interrupted;
   require_distinct_names(name, request.times);
   require_writable_dir(o.out_dir);
+  // One snapshot of this scene into this folder at a time (issue #12, row 9): two would
+  // write the same names, each renaming its PNG over the other's.
+  const OutputLock lock((std::filesystem::path(o.out_dir) / (scene.name + "_tau")).string());
   std::string error;
   std::size_t written = 0;
   const int status = snapshot_images(

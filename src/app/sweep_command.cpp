@@ -77,6 +77,10 @@ int sweep_command(const SweepOptions& o) {
         "add --submit slurm, or drop them for a sweep on this machine");
   const Shard shard = sweep_shard(o.shard);
   const PointRange range = shard_points(grid.size(), shard);
+  // The memory it will take, before building any point (issue #12: a sweep of a 10^8-bead
+  // chain used to die in the exact solver's first allocation, or later, at the kernel's hand).
+  require_memory(sweep_memory(o, grid, range), machine_memory(), "sweep " + o.scene,
+                 "use fewer beads (chain.beads), fewer --jobs, or a shard of the grid (--shard)");
   // Validate the scene and every value before any work: a bad value fails now, not at row 300.
   const std::vector<SceneDesc> scenes = point_scenes(o, grid, range);
   OutputFile out(o.csv);

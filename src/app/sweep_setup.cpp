@@ -3,7 +3,9 @@
 
 #include "resources/resources.h"  // kMaxSweepValues
 
+#include <algorithm>
 #include <filesystem>
+#include <thread>
 
 #include "app/csv.h"
 #include "scene/scene_hash.h"
@@ -63,6 +65,30 @@ std::vector<SceneDesc> point_scenes(const SweepOptions& o, const Grid& grid, Poi
           ": the exact first break has no closed form for an expr drive; use --solver rk4");
   }
   return scenes;
+}
+
+MemoryEstimate sweep_memory(const SweepOptions& o, const Grid& grid, PointRange range) {
+  const SceneDesc base = load_scene(o.scene, o.overrides);
+  // The largest chain any point runs: the base scene's, or the largest chain.beads value.
+  double beads = base.chain.beads;
+  for (const auto& axis : grid.axes)
+    if (axis.key == "chain.beads")
+      beads = std::max(beads, *std::max_element(axis.values.begin(), axis.values.end()));
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  const double jobs = std::min<double>(o.jobs > 0 ? o.jobs : cores, range.size());
+  const double points = static_cast<double>(range.size());
+  MemoryEstimate m;
+  // Every point's scene is built (and checked) before the first run; a table drive's rows
+  // are copied into each.
+  m.needs.push_back(
+      {"scenes of the points", points * (sizeof(SceneDesc) + 16.0 * base.drive.table.size())});
+  // One run per job at a time: RK4's arrays, and the exact solver's N x N tables too.
+  const double run = rk4_bytes(beads) + (o.solver == "exact" ? exact_table_bytes(beads) : 0.0);
+  m.needs.push_back({(o.solver == "exact" ? "exact tables and state of " : "RK4 state of ") +
+                         std::to_string(static_cast<long long>(jobs)) + " run(s) at once",
+                     jobs * run});
+  m.needs.push_back({"CSV text", points * csv_row_bytes(grid.axes.size() + 2.0)});
+  return m;
 }
 
 ShardRecord sweep_record(const SweepOptions& o, const Grid& grid) {

@@ -9,6 +9,7 @@
 #include "app/commands.h"
 #include "cluster/grid.h"
 #include "cluster/shard_record.h"
+#include "resources/resources.h"
 
 namespace cb {
 
@@ -17,6 +18,10 @@ namespace cb {
 Grid sweep_grid(const SweepOptions& o);
 // The scenes of points [range): every value validated before any work.
 std::vector<SceneDesc> point_scenes(const SweepOptions& o, const Grid& grid, PointRange range);
+// What the sweep of points [range) will hold at once (resources.h): the points' scenes, one
+// run per job (RK4 arrays; the exact solver's N x N tables too) and the CSV text. Sized by
+// the largest chain any point runs.
+MemoryEstimate sweep_memory(const SweepOptions& o, const Grid& grid, PointRange range);
 // The record of this sweep without shard, timing or host: scene, hash, solver, header, grid
 // and the command that recomputes it.
 ShardRecord sweep_record(const SweepOptions& o, const Grid& grid);

@@ -43,31 +43,38 @@ bool leading_values(const std::string& row, std::size_t count, std::vector<doubl
 }  // namespace
 
 ShardFile read_shard_file(const std::string& csv_path) {
-  ShardFile f;
-  f.csv_path = csv_path;
   const std::string json_path = record_path(csv_path);
   if (!fs::exists(json_path))
     throw MergeError(csv_path + ": no record " + json_path +
                      " beside it, so the shard is unfinished or not from `chainbreak sweep`; "
                      "recompute it (its sweep writes both)");
+  const std::string record_text = read_text(json_path, "shard record");
+  return parse_shard_file(csv_path, record_text, read_text(csv_path, "shard CSV"));
+}
+
+ShardFile parse_shard_file(const std::string& csv_path, const std::string& record_text,
+                           const std::string& csv_text) {
+  ShardFile f;
+  f.csv_path = csv_path;
   try {
-    f.record = parse_record(read_text(json_path, "shard record"));
-  } catch (const MergeError&) {
-    throw;
+    f.record = parse_record(record_text);
   } catch (const std::exception& e) {
-    throw MergeError(json_path + ": " + e.what() + "; recompute the shard");
+    throw MergeError(record_path(csv_path) + ": " + e.what() + "; recompute the shard");
   }
-  std::istringstream in(read_text(csv_path, "shard CSV"));
+  std::istringstream in(csv_text);
   std::string header;
   std::getline(in, header);
   if (header != f.record.header)
     throw MergeError(csv_path + ":1: header '" + header + "' is not '" + f.record.header +
                      "' of its record; recompute the shard");
-  for (std::string row; std::getline(in, row);) f.rows.push_back(row);
+  // Stops at one row past the record's count: a huge or hostile CSV is refused without
+  // holding all of it twice.
+  for (std::string row; f.rows.size() <= f.record.points.size() && std::getline(in, row);)
+    f.rows.push_back(row);
   if (f.rows.size() != f.record.points.size())
-    throw MergeError(csv_path + ": " + std::to_string(f.rows.size()) + " rows, but its record " +
-                     "says points " + std::to_string(f.record.points.first) + " to " +
-                     std::to_string(f.record.points.last) + " (" +
+    throw MergeError(csv_path + ": " + (f.rows.size() > f.record.points.size() ? "more" : "fewer") +
+                     " rows than its record's points " + std::to_string(f.record.points.first) +
+                     " to " + std::to_string(f.record.points.last) + " (" +
                      std::to_string(f.record.points.size()) + "); recompute the shard");
   std::vector<double> values;
   for (std::size_t k = 0; k < f.rows.size(); ++k) {

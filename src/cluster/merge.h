@@ -27,6 +27,9 @@ struct ShardFile {
 
 // Reads `csv_path` and its record; checks the header and that each row is its grid point.
 ShardFile read_shard_file(const std::string& csv_path);
+// The same from the two texts (the fuzz harness's entry, tests/fuzz/fuzz_merge.cpp).
+ShardFile parse_shard_file(const std::string& csv_path, const std::string& record_text,
+                           const std::string& csv_text);
 // The shard CSVs in a folder (those with a record beside them), sorted by name.
 std::vector<std::string> shard_csvs_in(const std::string& dir);
 

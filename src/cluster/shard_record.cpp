@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "resources/resources.h"  // kMaxSweepValues: a record's grid obeys the sweep's limit
+
 namespace cb {
 
 using json = nlohmann::ordered_json;
@@ -65,6 +67,17 @@ ShardRecord parse_record(const std::string& text) {
     r.peak_memory_kib = j.at("peak_memory_kib").get<long>();
     r.host = j.at("host").get<std::string>();
     r.command = j.at("command").get<std::vector<std::string>>();
+    // A record is input like any file (merge reads whatever is in the folder): its grid is
+    // held to the sweep's own limits before merge sizes anything by it (an axis without
+    // values would divide by zero in Grid::point, 40 axes of 2 ask for 2^40 points).
+    for (const auto& a : r.grid.axes)
+      if (a.values.empty()) throw std::runtime_error("its grid axis '" + a.key + "' has no values");
+    check_grid_size(r.grid, static_cast<std::size_t>(kMaxSweepValues));
+    if (r.shard.index < 1 || r.shard.index > r.shard.count ||
+        r.shard.count > static_cast<std::size_t>(kMaxSweepValues))
+      throw std::runtime_error(
+          "its shard " + std::to_string(r.shard.index) + "/" + std::to_string(r.shard.count) +
+          " is not I/S with 1 <= I <= S <= " + std::to_string(kMaxSweepValues));
     if (r.points.first > r.points.last || r.points.last > r.grid.size())
       throw std::runtime_error("its points " + std::to_string(r.points.first) + ".." +
                                std::to_string(r.points.last) + " are outside the grid of " +

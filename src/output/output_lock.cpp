@@ -18,6 +18,10 @@ std::string OutputLock::lock_path(const std::string& target) {
   return (p.parent_path() / ("." + p.filename().string() + ".lock")).string();
 }
 
+std::string OutputLock::video_lock_name(const std::string& video) {
+  return std::filesystem::path(video).replace_extension(".json").string();
+}
+
 OutputLock::OutputLock(const std::string& target) : path_(lock_path(target)) {
   for (;;) {
     fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);

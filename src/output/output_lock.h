@@ -2,6 +2,13 @@
 // `render`s to the same -o each renamed their video and their JSON sidecar into place, so the
 // pair could come from different runs.
 //
+// Every command that writes a set of files takes it, on one name per set (issue #12, row 9):
+// - render: the JSON sidecar (X.mp4 -> X.json; PNG frames: DIR/<scene>.json);
+// - the viewer's recorder: the same X.json (video_lock_name), so it and a render to X.mp4
+//   exclude each other;
+// - snapshot (with or without --overlay): DIR/<scene>_tau, the stem of its PNGs;
+// - figures: DIR/figures, the folder's set of figures.
+//
 // Design note: flock() on a hidden file beside the output, ".<name>.lock", taken before any
 // work and held until the last file of the set is renamed into place. The kernel drops the
 // lock when the process ends, however it ends, so a killed run never blocks the next one (a
@@ -24,6 +31,8 @@ class OutputLock {
   OutputLock& operator=(const OutputLock&) = delete;
 
   static std::string lock_path(const std::string& target);
+  // The name a video's set is locked under: its sidecar's, X.json for X.mp4 / X.webm / X.gif.
+  static std::string video_lock_name(const std::string& video);
 
  private:
   std::string path_;

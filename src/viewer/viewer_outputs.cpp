@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "output/output_file.h"
+#include "output/output_lock.h"
 #include "output/png_writer.h"
 #include "output/video_encoder.h"
 #include "scene/scene_writer.h"
@@ -61,8 +62,11 @@ std::string ViewerOutputs::start_recording(int width, int height, int fps, const
   settings.fps = fps;
   video_fps_ = fps;
   try {
+    // Before the encoder makes its temporary file: a render to the same video refuses us.
+    video_lock_ = std::make_unique<OutputLock>(OutputLock::video_lock_name(video_path_));
     video_ = std::make_unique<VideoEncoder>(video_path_, settings);
   } catch (const std::exception& e) {
+    video_lock_.reset();
     return std::string("record failed: ") + e.what();
   }
   video_frames_ = 0;
@@ -85,6 +89,7 @@ std::string ViewerOutputs::stop_recording() {
     status = std::string("record failed: ") + e.what();
   }
   video_.reset();
+  video_lock_.reset();  // after the video is in place
   return status;
 }
 

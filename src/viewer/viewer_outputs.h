@@ -14,6 +14,7 @@
 
 namespace cb {
 
+class OutputLock;
 class VideoEncoder;
 
 class ViewerOutputs {
@@ -46,6 +47,7 @@ class ViewerOutputs {
   std::string default_path(const std::string& suffix) const;
 
   std::string out_dir_, scene_name_;
+  std::unique_ptr<OutputLock> video_lock_;  // held while recording (output_lock.h)
   std::unique_ptr<VideoEncoder> video_;
   std::string video_path_;
   long long video_frames_ = 0;

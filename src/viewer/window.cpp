@@ -8,6 +8,7 @@
 #include <string>
 
 #include "gl/gl_loader.h"
+#include "viewer/keep_gl_driver.h"
 
 namespace cb {
 
@@ -51,6 +52,7 @@ Window::Window(int frame_width, int frame_height, const std::string& title, bool
     throw std::runtime_error("cannot open an OpenGL 3.3 core window: " + why);
   }
   glfwMakeContextCurrent(window_);
+  keep_gl_driver_loaded();  // ASan builds only: keep_gl_driver.h says why
   glfwSwapInterval(vsync ? 1 : 0);
   std::string missing;
   if (!load_gl_functions(proc_address, missing)) {

@@ -83,3 +83,61 @@ for text in ("0,30,60.5", "1e-3", "5,5,4"):
     put("fuzz_options", b"\x01" + text.encode())
 for text in ("1920x1080", "16x16", "99999999999x1"):
     put("fuzz_options", b"\x02" + text.encode())
+
+# merge: one or two shards, each "RECORD\n%%\nCSV", apart by "\n%%%%\n" (fuzz_merge.cpp).
+# Records as `chainbreak sweep --shard` writes them (cluster/shard_record.cpp), for a grid of
+# 10 threshold values in 3 shards, and a 2-axis grid; then hostile ones: an axis without
+# values (Grid::point divides by its count), 2^40 points, a shard 0/0, rows past the record.
+import json  # noqa: E402
+
+
+def record(axes, shard, count, first, end, header=None):
+    n = 1
+    for a in axes:
+        n *= len(a["values"])
+    return json.dumps({
+        "chainbreak_version": "0.1", "scene": "scenes/anomalous_breaking.toml",
+        "scene_hash": "0123456789abcdef", "solver": "exact",
+        "header": header or ("value,spring,tau" if len(axes) == 1 else
+                             ",".join(a["key"] for a in axes) + ",spring,tau"),
+        "grid": axes, "grid_points": n, "shard": {"index": shard, "count": count},
+        "first_point": first, "end_point": end, "wall_seconds": 1.5, "peak_memory_kib": 4096,
+        "host": "node1", "command": ["sweep", "scenes/anomalous_breaking.toml", "--vary", "x"]},
+        indent=1)
+
+
+THRESHOLD = [{"key": "chain.threshold", "spec": "--vary chain.threshold=1:10:10",
+              "values": [float(v) for v in range(1, 11)]}]
+
+
+def shard_text(axes, shard, count, first, end, rows):
+    return record(axes, shard, count, first, end) + "\n%%\n" + \
+        record_header(axes) + "\n" + "".join(r + "\n" for r in rows)
+
+
+def record_header(axes):
+    return "value,spring,tau" if len(axes) == 1 else ",".join(a["key"] for a in axes) + ",spring,tau"
+
+
+def threshold_rows(first, end):
+    return [f"{p + 1},{p % 29},{1.5 * p}" for p in range(first, end)]
+
+
+put("fuzz_merge", shard_text(THRESHOLD, 1, 3, 0, 3, threshold_rows(0, 3)), "merge_one_shard")
+put("fuzz_merge", shard_text(THRESHOLD, 1, 2, 0, 5, threshold_rows(0, 5)) + "\n%%%%\n" +
+    shard_text(THRESHOLD, 2, 2, 5, 10, threshold_rows(5, 10)), "merge_two_complete")
+put("fuzz_merge", shard_text(THRESHOLD, 1, 3, 0, 3, threshold_rows(0, 3)) + "\n%%%%\n" +
+    shard_text(THRESHOLD, 3, 3, 6, 10, threshold_rows(6, 10)), "merge_gap")
+TWO = [{"key": "drive.beta", "spec": "--vary drive.beta=0.1:0.3:3", "values": [0.1, 0.2, 0.3]},
+       {"key": "chain.gamma", "spec": "--vary chain.gamma=0,0.01", "values": [0.0, 0.01]}]
+put("fuzz_merge", shard_text(TWO, 1, 1, 0, 6,
+                             [f"{b},{g},3,{i}" for i, (b, g) in
+                              enumerate((b, g) for b in (0.1, 0.2, 0.3) for g in (0.0, 0.01))]),
+    "merge_two_axes")
+put("fuzz_merge", shard_text([{"key": "a", "spec": "a", "values": []}] + THRESHOLD, 1, 1, 0, 0,
+                             []), "merge_empty_axis")
+put("fuzz_merge", shard_text([{"key": f"k{i}", "spec": f"k{i}", "values": [0.0, 1.0]}
+                              for i in range(40)], 1, 1, 0, 1, ["0," * 40 + "1,2"]),
+    "merge_2_to_40_points")
+put("fuzz_merge", shard_text(THRESHOLD, 0, 0, 0, 3, threshold_rows(0, 3)), "merge_shard_0_of_0")
+put("fuzz_merge", shard_text(THRESHOLD, 1, 3, 0, 3, threshold_rows(0, 9)), "merge_extra_rows")
