@@ -250,9 +250,9 @@ int snapshot_command(const SnapshotOptions& o) {
   request.stop = &g_interrupted;
   require_distinct_names(name, request.times);
   require_writable_dir(o.out_dir);
-  // One snapshot of this scene into this folder at a time (issue #12, row 9): two would
+  // One snapshot of these scenes into this folder at a time (issue #12, row 9): two would
   // write the same names, each renaming its PNG over the other's.
-  const OutputLock lock((std::filesystem::path(o.out_dir) / (scene.name + "_tau")).string());
+  const OutputLock lock((std::filesystem::path(o.out_dir) / (name + "_tau")).string());
   std::string error;
   std::size_t written = 0;
   const int status = snapshot_images(
