@@ -128,10 +128,12 @@ class ChainAtTimes {
  public:
   ChainAtTimes(const SceneDesc& scene, const RenderDesc& frame, double last_tau)
       : scene_(scene),
-        frame_(frame),
         extent_(measure_run(scene, last_tau, scene.integrator.dt)),
         style_(snapshot_style(scene, frame, extent_)),
-        grid_run_(scene.chain, make_forcing(scene.drive), {scene.integrator.dt, 1}) {}
+        grid_run_(scene.chain, make_forcing(scene.drive), {scene.integrator.dt, 1}),
+        camera_(parse_zoom(frame.zoom, scene.chain.beads, "--zoom"), scene.chain.beads,
+                extent_.breaks.empty() ? 0 : extent_.breaks.front().spring,
+                extent_.breaks.empty() ? -1.0 : extent_.breaks.front().tau) {}
 
   // Null when the state stopped being finite (error() says why) or on an interrupt.
   std::optional<RenderSnapshot> at(double tau) {
@@ -153,20 +155,17 @@ class ChainAtTimes {
     }
     // auto / break zoom: a single picture has no camera history, so it settles at once.
     SnapshotStyle at_tau = style_;
-    ZoomCamera camera(parse_zoom(frame_.zoom, scene_.chain.beads, "--zoom"), scene_.chain.beads,
-                      extent_.breaks.empty() ? 0 : extent_.breaks.front().spring,
-                      extent_.breaks.empty() ? -1.0 : extent_.breaks.front().tau);
-    camera.frame(sim.state(), at_tau.zoom_first, at_tau.zoom_last, true);
+    camera_.frame(sim.state(), at_tau.zoom_first, at_tau.zoom_last, true);
     return build_snapshot(sim.state(), scene_.chain, sim.force_now(), at_tau);
   }
   const std::string& error() const { return error_; }
 
  private:
   const SceneDesc& scene_;
-  RenderDesc frame_;
   RunExtent extent_;
   SnapshotStyle style_;
   Integrator grid_run_;  // the on-grid times (sorted) share one run
+  ZoomCamera camera_;    // settled at every picture (no history), so one serves them all
   std::string error_;
 };
 
