@@ -2,6 +2,7 @@
 // the array spec and what is read from Slurm's output.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <filesystem>
 #include <map>
 
 #include "cluster/grid.h"
@@ -9,8 +10,26 @@
 #include "cluster/shard.h"
 #include "cluster/shard_record.h"
 #include "cluster/slurm.h"
+#include "test_support.h"
 
 using namespace cb;
+
+namespace {
+
+// The record of one shard holding the whole of a one-axis grid `vary` (e.g.
+// "chain.threshold=1:3:3").
+ShardRecord one_shard_record(const std::string& vary, const std::string& solver) {
+  ShardRecord r;
+  r.scene_hash = "h";
+  r.solver = solver;
+  add_axis(r.grid, parse_vary(vary));
+  r.header = r.grid.csv_header();
+  r.shard = {1, 1};
+  r.points = {0, r.grid.size()};
+  return r;
+}
+
+}  // namespace
 
 TEST_CASE("A grid numbers its points with the first axis slowest", "[cluster]") {
   Grid g;
@@ -27,7 +46,8 @@ TEST_CASE("A grid numbers its points with the first axis slowest", "[cluster]") 
   CHECK(one.csv_header() == "value,spring,tau");  // the historical one-key header
 }
 
-TEST_CASE("A --vary axis spaces values linearly or geometrically, ending on HI exactly", "[cluster]") {
+TEST_CASE("A --vary axis spaces values linearly or geometrically, ending on HI exactly",
+          "[cluster]") {
   const auto lin = parse_vary("chain.threshold=5:200:13");
   REQUIRE(lin.values.size() == 13);
   CHECK(lin.values.front() == 5);
@@ -72,7 +92,8 @@ TEST_CASE("Shards are contiguous balanced blocks that cover every point once", "
     }
 }
 
-TEST_CASE("Slurm array variables (--shard slurm) map a contiguous array onto shards 1..S", "[cluster]") {
+TEST_CASE("Slurm array variables (--shard slurm) map a contiguous array onto shards 1..S",
+          "[cluster]") {
   std::map<std::string, std::string> env = {
       {"SLURM_ARRAY_TASK_ID", "5"}, {"SLURM_ARRAY_TASK_MIN", "4"}, {"SLURM_ARRAY_TASK_COUNT", "3"}};
   auto get = [&](const char* k) -> const char* {
@@ -123,13 +144,7 @@ TEST_CASE("A record reads back as written", "[cluster]") {
 TEST_CASE("A record is held to the sweep's limits before merge sizes anything by it",
           "[cluster][hostile]") {
   // Seeds of tests/fuzz/corpus/fuzz_merge: a record is input like any file in the folder.
-  ShardRecord r;
-  r.scene_hash = "h";
-  r.solver = "rk4";
-  add_axis(r.grid, parse_vary("chain.threshold=1:10:10"));
-  r.header = r.grid.csv_header();
-  r.shard = {1, 1};
-  r.points = {0, 10};
+  const ShardRecord r = one_shard_record("chain.threshold=1:10:10", "rk4");
   CHECK_NOTHROW(parse_record(record_json(r)));
   // An axis without values: Grid::point would divide by its count of 0.
   ShardRecord empty = r;
@@ -155,19 +170,45 @@ TEST_CASE("A record is held to the sweep's limits before merge sizes anything by
 
 TEST_CASE("A shard CSV with more rows than its record is refused without reading them all",
           "[cluster][hostile]") {
-  ShardRecord r;
-  r.scene_hash = "h";
-  r.solver = "rk4";
-  add_axis(r.grid, parse_vary("chain.threshold=1:3:3"));
-  r.header = r.grid.csv_header();
-  r.shard = {1, 1};
-  r.points = {0, 3};
+  const ShardRecord r = one_shard_record("chain.threshold=1:3:3", "rk4");
   const std::string rows = "1,0,1\n2,0,1\n3,0,1\n";
   CHECK(parse_shard_file("s.csv", record_json(r), r.header + "\n" + rows).rows.size() == 3);
   CHECK_THROWS_WITH(parse_shard_file("s.csv", record_json(r), r.header + "\n" + rows + "4,0,1\n"),
                     Catch::Contains("s.csv: more rows than its record's points 0 to 3 (3)"));
   CHECK_THROWS_WITH(parse_shard_file("s.csv", record_json(r), r.header + "\n1,0,1\n"),
                     Catch::Contains("s.csv: fewer rows"));
+}
+
+TEST_CASE("merge refuses shard files that are not regular or larger than their record allows",
+          "[cluster][hostile]") {
+  // Issue #12: merge read whole shard files, so a CSV named for /dev/zero, or one padded to
+  // gigabytes, was read until memory ran out.
+  const ShardRecord r = one_shard_record("chain.threshold=1:3:3", "exact");
+  // The header and its newline, and 3 rows of 3 columns at 25 bytes a column.
+  const double bound = static_cast<double>(r.header.size() + 1) + 3 * 75.0;
+  CHECK(max_shard_csv_bytes(r) == bound);
+  const cb::test::TempDir dir;
+  const std::string csv = dir.file("s.csv");
+  cb::test::write_file(dir.file("s.json"), record_json(r));
+  const std::string rows = "1,0,1\n2,0,1\n3,0,1\n";
+  cb::test::write_file(csv, r.header + "\n" + rows);
+  CHECK(read_shard_file(csv).rows.size() == 3);
+  // Padded past the bound (a legal CSV cannot be): refused before it is read.
+  const std::string padded = r.header + "\n" + rows + std::string(300, '\n');
+  cb::test::write_file(csv, padded);
+  CHECK_THROWS_WITH(read_shard_file(csv),
+                    Catch::Contains("s.csv: the shard CSV is " + std::to_string(padded.size()) +
+                                    " B, more than the " + std::to_string(int(bound)) +
+                                    " B it can hold; recompute the shard"));
+  // Not a regular file.
+  std::filesystem::remove(csv);
+  std::filesystem::create_symlink("/dev/zero", csv);
+  CHECK_THROWS_WITH(read_shard_file(csv),
+                    Catch::Contains("s.csv: the shard CSV is not a regular file"));
+  std::filesystem::remove(dir.file("s.json"));
+  std::filesystem::create_symlink("/dev/zero", dir.file("s.json"));
+  CHECK_THROWS_WITH(read_shard_file(csv),
+                    Catch::Contains("s.json: the shard record is not a regular file"));
 }
 
 TEST_CASE("Coverage finds missing and duplicated points", "[cluster]") {

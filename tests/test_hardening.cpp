@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "app/sweep_setup.h"
 #include "resources/resources.h"
 #include "scene/scene.h"
 #include "scene_test_support.h"
@@ -144,6 +145,38 @@ TEST_CASE("SceneVariations matches parsing the file with the value as an overrid
     CHECK(in_memory.units->mass == parsed.units->mass);
     (void)base;
   }
+}
+
+TEST_CASE("A grid point's values are set in memory together, then validated once", "[hardening]") {
+  // gamma = 200 is unstable at the scene's dt and stable at dt = 0.001: set one at a time,
+  // the first would be refused before the second is set.
+  const std::string path = scene_file("anomalous_breaking.toml");
+  const cb::SceneVariations v(path, {});
+  const cb::SceneDesc point =
+      v.with({{"chain.gamma", 200, "--vary chain.gamma"}, {"integrator.dt", 0.001, "--vary dt"}});
+  const cb::SceneDesc parsed =
+      cb::load_scene(path, {{"chain.gamma", "200"}, {"integrator.dt", "0.001"}});
+  CHECK(point.chain.gamma == parsed.chain.gamma);
+  CHECK(point.integrator.dt == parsed.integrator.dt);
+  CHECK(point.origins.at("chain.gamma") == "--vary chain.gamma");
+  CHECK_THROWS_WITH(v.with("chain.gamma", 200, "--vary chain.gamma"),
+                    Contains("--vary chain.gamma: integrator.dt"));
+}
+
+TEST_CASE("sweep builds its points from the scene read once, named by their --vary",
+          "[hardening]") {
+  // Issue #12: sweep parsed the whole scene file again for every value; its points now come
+  // from SceneVariations, so their keys' origin is the option that gave them.
+  cb::SweepOptions o;
+  o.scene = scene_file("anomalous_breaking.toml");
+  o.axes = {"--vary chain.threshold=2:4:3", "--values drive.beta=0.02,0.05"};
+  const cb::Grid grid = cb::sweep_grid(o);
+  const auto scenes = cb::point_scenes(o, grid, {0, grid.size()});
+  REQUIRE(scenes.size() == 6);
+  CHECK(scenes[5].chain.threshold ==
+        cb::load_scene(o.scene, {{"chain.threshold", "4"}}).chain.threshold);
+  CHECK(scenes[5].origins.at("chain.threshold") == "--vary chain.threshold=2:4:3 (value 4)");
+  CHECK(scenes[5].origins.at("drive.beta") == "--values drive.beta=0.02,0.05 (value 0.05)");
 }
 
 TEST_CASE("machine memory: MemAvailable, or the cgroup's limit when lower", "[hardening]") {

@@ -59,3 +59,32 @@ TEST_CASE("figures refuses a folder another figures run is writing", "[figures][
   }
   CHECK(dir.names().empty());
 }
+
+TEST_CASE("sweep and merge refuse a CSV another sweep or merge is writing", "[sweep][lock]") {
+  // A CSV and its .json record are one set: two writers could leave the rows of one run
+  // beside the record of the other, which merge and resubmission trust.
+  TempDir dir;
+  const std::string grid = " --solver exact --vary chain.threshold=2:4:3 --quiet --csv ";
+  const std::string sweep = "sweep " + kScene + grid + dir.file("out.csv");
+  REQUIRE(cb::test::run_chainbreak("sweep " + kScene + grid + dir.file("part.csv")).status == 0);
+  const std::string merge = "merge --csv " + dir.file("out.csv") + " " + dir.file("part.csv");
+  {
+    const cb::OutputLock other(dir.file("out.csv"));
+    for (const auto& args : {sweep, merge}) {
+      INFO(args);
+      const auto r = cb::test::run_chainbreak(args);
+      CHECK(r.status == 2);
+      CHECK_THAT(r.err, Catch::Contains("out.csv: another chainbreak is writing this output now"));
+      CHECK(!std::filesystem::exists(dir.file("out.csv")));
+      CHECK(!std::filesystem::exists(dir.file("out.json")));
+    }
+  }
+  // Released: both write the pair and leave no lock file.
+  for (const auto& args : {sweep, merge}) {
+    const auto r = cb::test::run_chainbreak(args);
+    INFO(r.err);
+    CHECK(r.status == 0);
+    CHECK(std::filesystem::exists(dir.file("out.json")));
+    CHECK(!std::filesystem::exists(dir.file(".out.csv.lock")));
+  }
+}

@@ -53,6 +53,10 @@ inline std::string slurp(const std::string& path) {
   return s.str();
 }
 
+inline void write_file(const std::string& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+
 struct RunResult {
   int status = -1;
   std::string out, err;

@@ -3,12 +3,13 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "version.h"  // CHAINBREAK_VERSION (src/cmake/version.cmake)
 #include "app/commands.h"
 #include "app/sweep_setup.h"
 #include "cluster/merge.h"
 #include "cluster/slurm.h"
 #include "output/output_file.h"
+#include "output/output_lock.h"
+#include "version.h"  // CHAINBREAK_VERSION (src/cmake/version.cmake)
 
 namespace cb {
 
@@ -43,6 +44,8 @@ std::string recompute_hint(const ShardRecord& record, const std::vector<std::siz
 
 int merge_shards(const std::string& csv, const std::vector<std::string>& shard_csvs, bool quiet) {
   check_output_path(csv, "merged.csv");
+  // The merged CSV and its record are one set, like a sweep's (output_lock.h).
+  const OutputLock lock(csv);
   std::vector<ShardFile> shards;
   for (const auto& path : shard_csvs) shards.push_back(read_shard_file(path));
   const Coverage c = check_coverage(shards);

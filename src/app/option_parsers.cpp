@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "scene/scene.h"
+#include "strings/split.h"
 
 namespace cb {
 
@@ -15,16 +16,6 @@ namespace {
 bool parse_int(std::string_view text, int& out) {
   const auto r = std::from_chars(text.data(), text.data() + text.size(), out);
   return r.ec == std::errc() && r.ptr == text.data() + text.size();
-}
-
-std::vector<std::string_view> split(std::string_view text, char sep) {
-  std::vector<std::string_view> parts;
-  for (std::size_t start = 0;;) {
-    const auto end = text.find(sep, start);
-    parts.push_back(text.substr(start, end - start));
-    if (end == std::string_view::npos) return parts;
-    start = end + 1;
-  }
 }
 
 }  // namespace

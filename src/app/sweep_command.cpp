@@ -20,6 +20,7 @@
 #include "exact/first_break.h"
 #include "figures/break_maps.h"
 #include "output/output_file.h"
+#include "output/output_lock.h"
 #include "physics/integrator.h"
 #include "resources/resources.h"
 
@@ -83,6 +84,9 @@ int sweep_command(const SweepOptions& o) {
                  "use fewer beads (chain.beads), fewer --jobs, or a shard of the grid (--shard)");
   // Validate the scene and every value before any work: a bad value fails now, not at row 300.
   const std::vector<SceneDesc> scenes = point_scenes(o, grid, range);
+  // The CSV and its record are one set: a second sweep or a merge to the same name is refused
+  // while this one runs (output_lock.h), so the pair never comes from two runs.
+  const OutputLock lock(o.csv);
   OutputFile out(o.csv);
   OutputFile out_record(record_path(o.csv));
   // The per-value work is sweep_values.h's, shared with the Python module: one pool of

@@ -1,14 +1,13 @@
-#include "version.h"  // CHAINBREAK_VERSION (src/cmake/version.cmake)
 #include "app/sweep_setup.h"
-
-#include "resources/resources.h"  // kMaxSweepValues
 
 #include <algorithm>
 #include <filesystem>
 #include <thread>
 
 #include "app/csv.h"
+#include "resources/resources.h"  // kMaxSweepValues
 #include "scene/scene_hash.h"
+#include "version.h"  // CHAINBREAK_VERSION (src/cmake/version.cmake)
 
 namespace cb {
 
@@ -50,15 +49,42 @@ Grid sweep_grid(const SweepOptions& o) {
   return grid;
 }
 
+namespace {
+
+// Where a grid point's value came from, for validate()'s messages: the option as typed.
+std::string axis_origin(const GridAxis& axis, double value) {
+  return axis.spec + " (value " + number_text(value) + ")";
+}
+
+// What one point's scene holds, by the base scene: the struct, its strings (a string's
+// heap block when it outgrows the 15 characters held in place) and arrays, and a node of
+// about 64 bytes per key of its origins map.
+double scene_bytes(const SceneDesc& s) {
+  const auto text = [](const std::string& t) { return t.size() > 15 ? t.size() + 1.0 : 0.0; };
+  double bytes = sizeof(SceneDesc);
+  for (const auto* t : {&s.path, &s.name, &s.title, &s.render.view, &s.render.theme, &s.render.zoom,
+                        &s.render.caption, &s.drive.table_file, &s.drive.expr})
+    bytes += text(*t);
+  bytes += 8.0 * (s.drive.times.size() + s.drive.strengths.size()) + 16.0 * s.drive.table.size();
+  for (const auto& [key, where] : s.origins) bytes += 64 + text(key) + text(where);
+  return bytes;
+}
+
+}  // namespace
+
 std::vector<SceneDesc> point_scenes(const SweepOptions& o, const Grid& grid, PointRange range) {
+  // The file is read and parsed once; each point's values are set in memory and validated
+  // (issue #12: sweep used to parse the whole file again for every value).
+  const SceneVariations variations(o.scene, o.overrides);
   std::vector<SceneDesc> scenes;
   scenes.reserve(range.size());
+  std::vector<NumberSetting> settings;
   for (std::size_t i = range.first; i < range.last; ++i) {
-    auto overrides = o.overrides;
     const auto values = grid.point(i);
+    settings.clear();
     for (std::size_t k = 0; k < values.size(); ++k)
-      overrides.push_back({grid.axes[k].key, number_text(values[k])});
-    scenes.push_back(load_scene(o.scene, overrides));
+      settings.push_back({grid.axes[k].key, values[k], axis_origin(grid.axes[k], values[k])});
+    scenes.push_back(variations.with(settings));
     if (o.solver == "exact" && scenes.back().drive.type == DriveType::Expr)
       throw SceneError(
           o.scene +
@@ -79,9 +105,8 @@ MemoryEstimate sweep_memory(const SweepOptions& o, const Grid& grid, PointRange 
   const double points = static_cast<double>(range.size());
   MemoryEstimate m;
   // Every point's scene is built (and checked) before the first run; a table drive's rows
-  // are copied into each.
-  m.needs.push_back(
-      {"scenes of the points", points * (sizeof(SceneDesc) + 16.0 * base.drive.table.size())});
+  // and the scene's strings are copied into each.
+  m.needs.push_back({"scenes of the points", points * scene_bytes(base)});
   // One run per job at a time: RK4's arrays, and the exact solver's N x N tables too.
   const double run = rk4_bytes(beads) + (o.solver == "exact" ? exact_table_bytes(beads) : 0.0);
   m.needs.push_back({(o.solver == "exact" ? "exact tables and state of " : "RK4 state of ") +

@@ -1,9 +1,10 @@
 #include "cluster/grid.h"
 
-#include "resources/resources.h"  // kMaxSweepValues
-
 #include <charconv>
 #include <cmath>
+
+#include "resources/resources.h"  // kMaxSweepValues
+#include "strings/split.h"
 
 namespace cb {
 
@@ -12,16 +13,6 @@ namespace {
 bool parse_double(std::string_view text, double& out) {
   const auto r = std::from_chars(text.data(), text.data() + text.size(), out);
   return r.ec == std::errc() && r.ptr == text.data() + text.size() && std::isfinite(out);
-}
-
-std::vector<std::string_view> split(std::string_view text, char sep) {
-  std::vector<std::string_view> parts;
-  for (std::size_t start = 0;;) {
-    const auto end = text.find(sep, start);
-    parts.push_back(text.substr(start, end - start));
-    if (end == std::string_view::npos) return parts;
-    start = end + 1;
-  }
 }
 
 // "KEY=REST" -> key and rest, or GridError with `usage`.

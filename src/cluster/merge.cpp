@@ -8,13 +8,27 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "resources/resources.h"
+
 namespace cb {
 
 namespace fs = std::filesystem;
 
 namespace {
 
-std::string read_text(const std::string& path, const std::string& what) {
+// A shard's files are input like any other (issue #12): refuse a name that is not a regular
+// file (a FIFO or /dev/zero would be read forever) or a file larger than `max_bytes`, before
+// reading a byte of it.
+std::string read_text(const std::string& path, const std::string& what, double max_bytes) {
+  std::error_code ec;
+  const auto status = fs::status(path, ec);
+  if (!ec && fs::exists(status) && !fs::is_regular_file(status))
+    throw MergeError(path + ": the " + what + " is not a regular file; name the shard's .csv");
+  const auto size = fs::file_size(path, ec);
+  if (!ec && static_cast<double>(size) > max_bytes)
+    throw MergeError(path + ": the " + what + " is " + format_bytes(static_cast<double>(size)) +
+                     ", more than the " + format_bytes(max_bytes) +
+                     " it can hold; recompute the shard");
   std::ifstream in(path, std::ios::binary);
   if (!in)
     throw MergeError(path + ": cannot read the " + what +
@@ -40,7 +54,21 @@ bool leading_values(const std::string& row, std::size_t count, std::vector<doubl
   return true;
 }
 
+ShardRecord shard_record_of(const std::string& csv_path, const std::string& record_text) {
+  try {
+    return parse_record(record_text);
+  } catch (const std::exception& e) {
+    throw MergeError(record_path(csv_path) + ": " + e.what() + "; recompute the shard");
+  }
+}
+
 }  // namespace
+
+double max_shard_csv_bytes(const ShardRecord& record) {
+  const auto columns = std::count(record.header.begin(), record.header.end(), ',') + 1;
+  return static_cast<double>(record.header.size() + 1) +
+         static_cast<double>(record.points.size()) * csv_row_bytes(static_cast<double>(columns));
+}
 
 ShardFile read_shard_file(const std::string& csv_path) {
   const std::string json_path = record_path(csv_path);
@@ -48,19 +76,19 @@ ShardFile read_shard_file(const std::string& csv_path) {
     throw MergeError(csv_path + ": no record " + json_path +
                      " beside it, so the shard is unfinished or not from `chainbreak sweep`; "
                      "recompute it (its sweep writes both)");
-  const std::string record_text = read_text(json_path, "shard record");
-  return parse_shard_file(csv_path, record_text, read_text(csv_path, "shard CSV"));
+  const std::string record_text = read_text(json_path, "shard record", kMaxShardRecordBytes);
+  // The CSV may hold what its record says and no more: the header, and a row of at most
+  // csv_row_bytes per point. The record is parsed twice; it is small next to the CSV.
+  const ShardRecord record = shard_record_of(csv_path, record_text);
+  return parse_shard_file(csv_path, record_text,
+                          read_text(csv_path, "shard CSV", max_shard_csv_bytes(record)));
 }
 
 ShardFile parse_shard_file(const std::string& csv_path, const std::string& record_text,
                            const std::string& csv_text) {
   ShardFile f;
   f.csv_path = csv_path;
-  try {
-    f.record = parse_record(record_text);
-  } catch (const std::exception& e) {
-    throw MergeError(record_path(csv_path) + ": " + e.what() + "; recompute the shard");
-  }
+  f.record = shard_record_of(csv_path, record_text);
   std::istringstream in(csv_text);
   std::string header;
   std::getline(in, header);

@@ -25,7 +25,15 @@ struct ShardFile {
   std::vector<std::string> rows;  // data lines without the header, without '\n'
 };
 
-// Reads `csv_path` and its record; checks the header and that each row is its grid point.
+// A shard record's largest size: ~25 bytes per axis value, so a grid at sweep's limit of
+// points on one axis fits, with room for the command and the scene's name.
+inline constexpr double kMaxShardRecordBytes = 64e6;
+// A shard CSV's largest size: the header and, per point of the record, a row of at most
+// csv_row_bytes (resources.h) per column.
+double max_shard_csv_bytes(const ShardRecord& record);
+
+// Reads `csv_path` and its record (each a regular file within its size limit); checks the header
+// and that each row is its grid point.
 ShardFile read_shard_file(const std::string& csv_path);
 // The same from the two texts (the fuzz harness's entry, tests/fuzz/fuzz_merge.cpp).
 ShardFile parse_shard_file(const std::string& csv_path, const std::string& record_text,

@@ -7,7 +7,8 @@
 // - the viewer's recorder: the same X.json (video_lock_name), so it and a render to X.mp4
 //   exclude each other;
 // - snapshot (with or without --overlay): DIR/<scene>_tau, the stem of its PNGs;
-// - figures: DIR/figures, the folder's set of figures.
+// - figures: DIR/figures, the folder's set of figures;
+// - sweep and merge: the CSV (X.csv, whose record is X.json), so they exclude each other.
 //
 // Design note: flock() on a hidden file beside the output, ".<name>.lock", taken before any
 // work and held until the last file of the set is renamed into place. The kernel drops the

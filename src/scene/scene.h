@@ -61,7 +61,7 @@ struct RenderDesc {
   // A line of text under the chain, and seconds of title card opening the video (0: none).
   std::string caption;
   double title_card = 0.0;
-  bool overlay = true;                // videos: the HUD and plots under the chain (src/overlay)
+  bool overlay = true;  // videos: the HUD and plots under the chain (src/overlay)
   // Which parts of the overlay: the HUD; phi_1, phi_N/2, phi_N and energy vs tau; the
   // space-time picture of the strain; the normal-mode bars.
   bool overlay_hud = true, overlay_plots = true, overlay_spacetime = true, overlay_modes = true;
@@ -103,6 +103,13 @@ void validate(const SceneDesc& scene);
 // then re-reads the scene text with an Override. Throws SceneError for a bad value.
 bool set_scene_number(SceneDesc& scene, const std::string& key, double value,
                       const std::string& origin);
+// Several keys at once, validated once they are all set (a grid point of `sweep`).
+struct NumberSetting {
+  std::string key;
+  double value;
+  std::string origin;
+};
+bool set_scene_numbers(SceneDesc& scene, const std::vector<NumberSetting>& settings);
 
 // "section.key=value": value is TOML (numbers, true/false, "strings", [arrays]);
 // a bare word that is not a TOML value is taken as a string (drive.type=step).
@@ -119,14 +126,15 @@ SceneDesc parse_scene(const std::string& text, const std::string& path,
 // The scene file's text (what load_scene parses); throws SceneError when it cannot be read.
 std::string read_scene_text(const std::string& path);
 
-// The scenes of a sweep: one scene file (read once) and its overrides, with one numeric key
-// set to each value in turn by set_scene_number, or, for a key it cannot set, by parsing the
-// text again with the value as an override.
+// The scenes of a sweep: one scene file (read once) and its overrides, with numeric keys
+// set to each grid point's values by set_scene_numbers, or, for a key it cannot set, by
+// parsing the text again with the values as overrides.
 class SceneVariations {
  public:
   SceneVariations(std::string path, std::vector<Override> overrides);  // throws SceneError
   // `origin` names the option that gave the value in error messages.
   SceneDesc with(const std::string& key, double value, const std::string& origin) const;
+  SceneDesc with(const std::vector<NumberSetting>& settings) const;  // a grid point
 
  private:
   std::string path_;

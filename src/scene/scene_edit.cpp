@@ -59,10 +59,12 @@ int whole(const std::string& key, double v, const std::string& origin) {
 
 }  // namespace
 
-bool set_scene_number(SceneDesc& scene, const std::string& key, double value,
-                      const std::string& origin) {
-  const scene_detail::Conversion c = scene_detail::conversion_for(scene.units);
-  SceneDesc next = scene;
+namespace {
+
+// Sets `key` of `next` without validating it; false for a key that cannot be set in memory.
+bool assign_number(SceneDesc& next, const std::string& key, double value,
+                   const std::string& origin) {
+  const scene_detail::Conversion c = scene_detail::conversion_for(next.units);
   if (key == "chain.beads") {
     next.chain.beads = whole(key, value, origin);
   } else if (key == "render.width") {
@@ -73,7 +75,7 @@ bool set_scene_number(SceneDesc& scene, const std::string& key, double value,
     next.integrator.after_break = c.time(value);
   } else if (key == "chain.gamma") {
     // With units.friction given, gamma follows from it and the reader must settle the two.
-    if (scene.units && scene.origins.count("units.friction")) return false;
+    if (next.units && next.origins.count("units.friction")) return false;
     next.chain.gamma = value;
     if (next.units) next.units->friction = value * 2.0 * next.units->mass * next.units->omega0();
   } else {
@@ -84,6 +86,22 @@ bool set_scene_number(SceneDesc& scene, const std::string& key, double value,
     *found->field(next) = converted(c, found->quantity, value);
   }
   next.origins[key] = origin;
+  return true;
+}
+
+}  // namespace
+
+bool set_scene_number(SceneDesc& scene, const std::string& key, double value,
+                      const std::string& origin) {
+  return set_scene_numbers(scene, {{key, value, origin}});
+}
+
+bool set_scene_numbers(SceneDesc& scene, const std::vector<NumberSetting>& settings) {
+  SceneDesc next = scene;
+  for (const NumberSetting& s : settings)
+    if (!assign_number(next, s.key, s.value, s.origin)) return false;
+  // Checked once all are set: values that only fit together (N and dt) are not refused
+  // half way.
   validate(next);
   scene = std::move(next);
   return true;
@@ -102,12 +120,17 @@ SceneVariations::SceneVariations(std::string path, std::vector<Override> overrid
 
 SceneDesc SceneVariations::with(const std::string& key, double value,
                                 const std::string& origin) const {
+  return with({{key, value, origin}});
+}
+
+SceneDesc SceneVariations::with(const std::vector<NumberSetting>& settings) const {
   if (base_) {
     SceneDesc scene = *base_;
-    if (set_scene_number(scene, key, value, origin)) return scene;
+    if (set_scene_numbers(scene, settings)) return scene;
   }
   auto overrides = overrides_;
-  overrides.push_back({key, scene_detail::format_exact(value)});
+  for (const NumberSetting& s : settings)
+    overrides.push_back({s.key, scene_detail::format_exact(s.value)});
   return parse_scene(text_, path_, overrides);
 }
 
