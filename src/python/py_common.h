@@ -28,6 +28,8 @@ class Scene {
   void set(const std::string& key, const py::handle& value);
   // The scene with extra overrides (a sweep's values) on top of this one's.
   SceneDesc resolve(const std::vector<Override>& extra = {}) const;
+  // The scene read once, for setting many values in memory (a sweep's points).
+  SceneVariations variations() const;
 
   const std::string& path() const { return path_; }
   const std::vector<Override>& overrides() const { return overrides_; }

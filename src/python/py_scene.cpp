@@ -85,8 +85,11 @@ void Scene::set(const std::string& key, const py::handle& value) {
 SceneDesc Scene::resolve(const std::vector<Override>& extra) const {
   std::vector<Override> all = overrides_;
   all.insert(all.end(), extra.begin(), extra.end());
-  // When SceneDesc::validate() lands (branch i12a) this stays the one call to switch.
   return from_file_ ? load_scene(path_, all) : parse_scene(text_, path_, all);
+}
+
+SceneVariations Scene::variations() const {
+  return {path_, from_file_ ? read_scene_text(path_) : text_, overrides_};
 }
 
 namespace {

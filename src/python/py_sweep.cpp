@@ -7,8 +7,10 @@
 
 #include "app/csv.h"
 #include "app/sweep_values.h"
+#include "cluster/grid.h"
 #include "interruptible.h"
 #include "py_common.h"
+#include "resources/resources.h"  // kMaxSweepValues
 
 namespace cb::py_detail {
 
@@ -16,49 +18,32 @@ namespace {
 
 using Values = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-// The grid: the cartesian product of the keys' values, the first key varying slowest (numpy's
-// meshgrid(..., indexing="ij") flattened). Each point is the scene with one --set per key,
-// the value written as `chainbreak sweep` writes it (shortest round trip), so the scene reads
-// back exactly the double in the array.
-struct Grid {
-  std::vector<std::string> keys;
-  std::vector<std::vector<double>> values;  // per key
-  std::size_t size() const {
-    std::size_t n = 1;
-    for (const auto& v : values) n *= v.size();
-    return n;
-  }
-  std::vector<double> point(std::size_t index) const {
-    std::vector<double> p(keys.size());
-    for (std::size_t k = keys.size(); k-- > 0;) {
-      p[k] = values[k][index % values[k].size()];
-      index /= values[k].size();
-    }
-    return p;
-  }
-};
-
 py::dict sweep(const Scene& source, const py::dict& vary, const std::string& solver, int jobs) {
   if (vary.empty())
     throw SceneError("sweep: vary is empty; give e.g. vary={'drive.beta': numpy.linspace(...)}");
+  // The grid is `chainbreak sweep`'s (cluster/grid.h): the cartesian product of the keys'
+  // values, the first key varying slowest (numpy's meshgrid(..., indexing="ij") flattened).
   Grid grid;
   for (const auto& [key, values] : vary) {
-    grid.keys.push_back(py::str(key).cast<std::string>());
+    const std::string name = py::str(key).cast<std::string>();
     const Values array = Values::ensure(values);
     if (!array || array.ndim() > 1 || array.size() == 0)
-      throw SceneError("sweep: vary['" + grid.keys.back() +
-                       "'] must be a non-empty 1-D sequence of numbers");
-    grid.values.emplace_back(array.data(), array.data() + array.size());
+      throw SceneError("sweep: vary['" + name + "'] must be a non-empty 1-D sequence of numbers");
+    add_axis(grid, {name, {array.data(), array.data() + array.size()}, "vary['" + name + "']"});
   }
-  // Every point is read and checked before any work: a bad value fails now.
+  check_grid_size(grid, static_cast<std::size_t>(kMaxSweepValues));
+  // Every point is set in memory on the scene read once, and checked before any work: a bad
+  // value fails now, named by its key and value.
+  const SceneVariations variations = source.variations();
   std::vector<SceneDesc> scenes;
   scenes.reserve(grid.size());
+  std::vector<NumberSetting> settings;
   for (std::size_t i = 0; i < grid.size(); ++i) {
     const std::vector<double> p = grid.point(i);
-    std::vector<Override> overrides;
+    settings.clear();
     for (std::size_t k = 0; k < p.size(); ++k)
-      overrides.push_back({grid.keys[k], number_text(p[k])});
-    scenes.push_back(source.resolve(overrides));
+      settings.push_back({grid.axes[k].key, p[k], grid.axes[k].spec + " = " + number_text(p[k])});
+    scenes.push_back(variations.with(settings));
     check_sweep_scene(scenes.back(), solver);
   }
   const std::vector<FirstBreak> breaks =
@@ -69,10 +54,10 @@ py::dict sweep(const Scene& source, const py::dict& vary, const std::string& sol
   }
   const auto n = static_cast<py::ssize_t>(grid.size());
   py::dict out;
-  for (std::size_t k = 0; k < grid.keys.size(); ++k) {
+  for (std::size_t k = 0; k < grid.axes.size(); ++k) {
     std::vector<double> column(grid.size());
     for (std::size_t i = 0; i < grid.size(); ++i) column[i] = grid.point(i)[k];
-    out[py::str(grid.keys[k])] = to_numpy(std::move(column), {n});
+    out[py::str(grid.axes[k].key)] = to_numpy(std::move(column), {n});
   }
   std::vector<std::int64_t> spring(grid.size(), -1);
   std::vector<double> tau(grid.size(), std::numeric_limits<double>::quiet_NaN());

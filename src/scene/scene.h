@@ -132,6 +132,8 @@ std::string read_scene_text(const std::string& path);
 class SceneVariations {
  public:
   SceneVariations(std::string path, std::vector<Override> overrides);  // throws SceneError
+  // The same from the scene's text (`path` names it in messages).
+  SceneVariations(std::string path, std::string text, std::vector<Override> overrides);
   // `origin` names the option that gave the value in error messages.
   SceneDesc with(const std::string& key, double value, const std::string& origin) const;
   SceneDesc with(const std::vector<NumberSetting>& settings) const;  // a grid point

@@ -108,7 +108,11 @@ bool set_scene_numbers(SceneDesc& scene, const std::vector<NumberSetting>& setti
 }
 
 SceneVariations::SceneVariations(std::string path, std::vector<Override> overrides)
-    : path_(std::move(path)), overrides_(std::move(overrides)), text_(read_scene_text(path_)) {
+    : SceneVariations(path, read_scene_text(path), std::move(overrides)) {}
+
+SceneVariations::SceneVariations(std::string path, std::string text,
+                                 std::vector<Override> overrides)
+    : path_(std::move(path)), overrides_(std::move(overrides)), text_(std::move(text)) {
   // A scene that fails alone may still pass with the varied value (a dt too large for the
   // scene's N, swept down): then each value is parsed from the text, as an override.
   try {

@@ -44,3 +44,15 @@ def test_two_keys_are_a_cartesian_product(scenes):
         pick = grid["chain.gamma"] == g
         assert np.array_equal(grid["spring"][pick], one["spring"])
         assert np.array_equal(grid["tau"][pick], one["tau"])
+
+
+def test_a_bad_value_is_named_by_its_key_before_any_work(scenes):
+    # Each point is set in memory on the scene read once and validated (issue #12); the error
+    # names the vary key and the value, like `chainbreak sweep` names its --vary.
+    scene = chainbreak.Scene.load(str(scenes / "anomalous_breaking.toml"))
+    try:
+        chainbreak.sweep(scene, vary={"chain.gamma": np.array([0.0, -1.0])}, solver="exact")
+    except chainbreak.SceneError as e:
+        assert "vary['chain.gamma'] = -1: chain.gamma must be >= 0" in str(e)
+    else:
+        raise AssertionError("a negative gamma was swept")
