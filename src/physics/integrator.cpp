@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "physics/crossing.h"
+#include "physics/rk4_chain.h"
 #include "physics/rk4_tile.h"
 #include "physics/run_loop.h"
 #include "physics/worker_pool.h"
@@ -19,6 +20,8 @@ namespace {
 
 // Below this many beads per extra thread, waking a thread costs more than it saves.
 constexpr int kBeadsPerThread = 20000;
+// Up to this many beads a chain on one worker takes the one-chain kernel (rk4_chain.h).
+constexpr int kChainBeads = 20000;
 
 }  // namespace
 
@@ -31,13 +34,16 @@ struct Integrator::Impl {
   std::size_t next_kick = 0;
   SimdPath simd;
   detail::Rk4Beads kernel;
+  detail::Rk4Chain chain_kernel = nullptr;  // null: always tiled
 
-  Impl(int beads, int threads, SimdPath path)
+  Impl(int beads, int threads, SimdPath path, bool tiled_only)
       : psi_next(beads),
         vel_next(beads),
         pool(std::clamp(threads, 1, 1 + beads / kBeadsPerThread)),
         simd(path),
         kernel(detail::rk4_kernel(path)) {
+    if (!tiled_only && pool.size() == 1 && beads <= kChainBeads)
+      chain_kernel = detail::rk4_chain_kernel(path);
     const int workers = pool.size();
     scratch.resize(workers);
     outputs.resize(workers);
@@ -55,7 +61,7 @@ Integrator::Integrator(const ChainParams& params, Forcing forcing, IntegratorOpt
   state_.psi.assign(params_.beads, 0.0);
   state_.vel.assign(params_.beads, 0.0);
   impl_ = std::make_unique<Impl>(params_.beads, options_.threads,
-                                 options_.simd.value_or(active_simd()));
+                                 options_.simd.value_or(active_simd()), options_.tiled_only);
 }
 
 Integrator::~Integrator() = default;
@@ -142,10 +148,16 @@ bool Integrator::rk4(double ta, double tb, bool end_is_breakpoint) {
   in.broken = &state_.broken;
   in.threshold = params_.breakable() ? params_.threshold : 0.0;
   in.stretch_only = params_.break_on == BreakMode::Stretch;
-  im.pool.run([&](int w) {
-    im.outputs[w].reset();
-    im.kernel(in, im.ranges[w].first, im.ranges[w].second, im.scratch[w], im.outputs[w]);
-  });
+  if (im.chain_kernel && state_.broken.empty()) {
+    // A small chain, no spring broken: one call, no tiles (same bits).
+    im.outputs[0].reset();
+    im.chain_kernel(in, im.outputs[0]);
+  } else {
+    im.pool.run([&](int w) {
+      im.outputs[w].reset();
+      im.kernel(in, im.ranges[w].first, im.ranges[w].second, im.scratch[w], im.outputs[w]);
+    });
+  }
   stage_dissipation_ = 0.0;
   stage_work_ = 0.0;
   bool finite = true;

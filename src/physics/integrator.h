@@ -26,6 +26,9 @@ struct IntegratorOptions {
   // The kernel's instruction set; empty: the process's (active_simd()). Any path gives
   // bit-identical results.
   std::optional<SimdPath> simd = std::nullopt;
+  // Always take the tiled kernel, also where the one-chain kernel would run (a small chain on
+  // one thread, no spring broken). Same bits either way; tests compare the two paths.
+  bool tiled_only = false;
 };
 
 class Integrator {
