@@ -220,9 +220,11 @@ TEST_CASE("run names the path in its JSON, same numbers on each, a bad CHAINBREA
 }
 
 // The one-chain kernel (physics/rk4_chain.h) against the tiled one it replaces for small
-// chains: the same bytes on every path the CPU has. The lengths sit on the kernel's edges:
-// vector blocks (1, 2, 3, 7: bead N in every lane position), one tile (511, 512: the friction
-// sums' tail of four, none), two tiles (513, 1000: the per-tile sums). The scenes pass through
+// chains (AVX2, AVX-512; SSE2 keeps the tiled one): the same bytes on every path the CPU has.
+// The lengths sit on the kernel's edges: bead N in most lane positions of a block (1, 2, 3, 7,
+// 12, 30), the unrolled copy for up to 32 beads and the general one past it (33), one tile
+// (511, 512: the friction sums' tail of four, none), two tiles (513, 1000: the per-tile
+// sums). The scenes pass through
 // both kernels: the chain kernel until the first spring breaks, the tiled one after; the pull
 // string, kicks between grid points, friction on and off, both break rules, and an unbreakable
 // chain (no crossing checks). Tolerance: none, the bytes must be equal.
@@ -250,7 +252,7 @@ TEST_CASE("the small-chain kernel gives the same bytes as the tiled kernel", "[s
       {"unbreakable, friction, ramp", 0.01, kNever, cb::BreakMode::Abs, false, cb::DriveType::Ramp,
        0.001, 0.25, 6000},
   };
-  for (int beads : {1, 2, 3, 7, 30, 511, 512, 513, 1000}) {
+  for (int beads : {1, 2, 3, 7, 12, 30, 33, 511, 512, 513, 1000}) {
     for (const Variant& v : variants) {
       cb::ChainParams p;
       p.beads = beads;
