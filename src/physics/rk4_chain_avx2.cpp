@@ -1,4 +1,6 @@
 // The one-chain RK4 kernel (rk4_chain_kernel.inc) compiled for AVX2 (4 doubles a vector).
+#include <immintrin.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
