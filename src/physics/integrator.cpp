@@ -79,6 +79,10 @@ SimdPath Integrator::simd() const {
   return impl_->simd;
 }
 
+bool Integrator::small_chain_kernel() const {
+  return impl_->chain_kernel != nullptr;
+}
+
 double Integrator::force_now() const {
   return state_.string_broken ? 0.0 : forcing_(state_.tau);
 }

@@ -52,7 +52,10 @@ class Integrator {
   const ChainState& state() const { return state_; }
   const ChainParams& params() const { return params_; }
   double dt() const { return options_.dt; }
-  SimdPath simd() const;     // the instruction set the kernel runs on
+  SimdPath simd() const;  // the instruction set the kernel runs on
+  // Whether steps take the one-chain kernel (rk4_chain.h) while no spring is broken: one
+  // worker, N < 20000, AVX2 or AVX-512, not tiled_only. Same bits either way.
+  bool small_chain_kernel() const;
   double force_now() const;  // f(tau) acting on bead N now (0 after the pull string broke)
   const std::string& error() const { return error_; }
 
