@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "drive/drive.h"
@@ -216,4 +217,81 @@ TEST_CASE("run names the path in its JSON, same numbers on each, a bad CHAINBREA
   CHECK_THAT(bad.err, Catch::Contains("CHAINBREAK_SIMD=avx3") &&
                           Catch::Contains("expected auto, sse2, avx2 or avx512"));
   CHECK_FALSE(std::filesystem::exists(csv));
+}
+
+// The one-chain kernel (physics/rk4_chain.h) against the tiled one it replaces for small
+// chains (AVX2, AVX-512; SSE2 keeps the tiled one): the same bytes on every path the CPU has.
+// The lengths sit on the kernel's edges: bead N in most lane positions of a block (1, 2, 3, 7,
+// 12, 30), the unrolled copy for up to 32 beads and the general one past it (33), one tile
+// (511, 512: the friction sums' tail of four, none), two tiles (513, 1000: the per-tile
+// sums). The scenes pass through
+// both kernels: the chain kernel until the first spring breaks, the tiled one after; the pull
+// string, kicks between grid points, friction on and off, both break rules, and an unbreakable
+// chain (no crossing checks). Tolerance: none, the bytes must be equal.
+TEST_CASE("the small-chain kernel gives the same bytes as the tiled kernel", "[simd][small]") {
+  // dt near RK4's limit (1.39 here), so that the wave crosses the 1000 beads in a few thousand
+  // steps: both tiles then carry motion, and a friction sum over the whole chain instead of
+  // per tile would change the energy books' bits.
+  struct Variant {
+    const char* name;
+    double gamma, threshold;
+    cb::BreakMode mode;
+    bool pull_string;
+    cb::DriveType drive;
+    double beta, dt;
+    std::int64_t steps;
+  };
+  constexpr double kNever = std::numeric_limits<double>::infinity();
+  const Variant variants[] = {
+      // A slow ramp: the string or a spring goes near f = 1 (tau ~ 1000), the wave is everywhere.
+      {"friction, pull string, ramp, kicks", 0.05, 1.0, cb::BreakMode::Abs, true,
+       cb::DriveType::Ramp, 0.001, 0.25, 6000},
+      // Springs break from step ~40 (N = 7) to ~2700 (N = 512); none at N = 1000.
+      {"no friction, stretch, sine", 0.0, 0.7, cb::BreakMode::Stretch, false, cb::DriveType::Sine,
+       0.0, 0.2, 4000},
+      {"unbreakable, friction, ramp", 0.01, kNever, cb::BreakMode::Abs, false, cb::DriveType::Ramp,
+       0.001, 0.25, 6000},
+  };
+  for (int beads : {1, 2, 3, 7, 12, 30, 33, 511, 512, 513, 1000}) {
+    for (const Variant& v : variants) {
+      cb::ChainParams p;
+      p.beads = beads;
+      p.gamma = v.gamma;
+      p.threshold = v.threshold;
+      p.break_on = v.mode;
+      p.pull_string = v.pull_string;
+      cb::DriveDesc d;
+      d.type = v.drive;
+      d.beta = v.beta;
+      d.amplitude = 0.4;
+      d.period = 31.0;
+      cb::Forcing forcing = cb::make_forcing(d);
+      // Inside steps (not on the grid): each splits its step and jumps bead N's velocity.
+      forcing.kicks = {{0.505, 0.7}, {3.2551, -0.4}};
+      auto run = [&](cb::SimdPath path, bool tiled_only) {
+        cb::IntegratorOptions o{v.dt, 1, path};
+        o.tiled_only = tiled_only;
+        cb::Integrator sim(p, forcing, o);
+        // The comparison means something only if the new path runs where it should.
+        REQUIRE(sim.small_chain_kernel() == (!tiled_only && path != cb::SimdPath::Sse2));
+        REQUIRE(sim.advance_to(v.steps));
+        return sim.state();
+      };
+      INFO("N = " << beads << ", " << v.name);
+      const cb::ChainState base = run(cb::SimdPath::Sse2, true);
+      // The chain kernel ran a good part of the run before a first break sent the rest to
+      // the tiled one.
+      if (v.pull_string && beads >= 7) REQUIRE_FALSE(base.breaks.empty());
+      if (!base.breaks.empty() && beads >= 7) CHECK(base.breaks.front().step > 40);
+      for (cb::SimdPath path : {cb::SimdPath::Sse2, cb::SimdPath::Avx2, cb::SimdPath::Avx512}) {
+        if (!cb::simd_supported(path)) {
+          WARN("this CPU has no " << cb::simd_name(path) << ": path not checked");
+          continue;
+        }
+        INFO(cb::simd_name(path));
+        CHECK(state_bytes(run(path, false)) == state_bytes(base));
+        if (path != cb::SimdPath::Sse2) CHECK(state_bytes(run(path, true)) == state_bytes(base));
+      }
+    }
+  }
 }

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "physics/crossing.h"
+#include "physics/rk4_chain.h"
 #include "physics/rk4_tile.h"
 #include "physics/run_loop.h"
 #include "physics/worker_pool.h"
@@ -19,6 +20,8 @@ namespace {
 
 // Below this many beads per extra thread, waking a thread costs more than it saves.
 constexpr int kBeadsPerThread = 20000;
+// Up to this many beads a chain on one worker takes the one-chain kernel (rk4_chain.h).
+constexpr int kChainBeads = 20000;
 
 }  // namespace
 
@@ -29,15 +32,25 @@ struct Integrator::Impl {
   std::vector<detail::StepOutput> outputs;   // one per worker
   std::vector<std::pair<int, int>> ranges;   // beads [first, last) per worker, tile-aligned
   std::size_t next_kick = 0;
+  // The first breakpoint not yet behind the clock (see step()); only if they are sorted.
+  std::size_t next_breakpoint = 0;
+  bool breakpoints_sorted = false;
+  // The drive's last value: a step's end is the next step's start, so each step asks for
+  // two new values instead of three. f is a function of tau (forcing.h).
+  std::uint64_t drive_tau = 0x7ff8dead00000000ull;  // a NaN: no tau equals it
+  double drive_f = 0.0;
   SimdPath simd;
   detail::Rk4Beads kernel;
+  detail::Rk4Chain chain_kernel = nullptr;  // null: always tiled
 
-  Impl(int beads, int threads, SimdPath path)
+  Impl(int beads, int threads, SimdPath path, bool tiled_only)
       : psi_next(beads),
         vel_next(beads),
         pool(std::clamp(threads, 1, 1 + beads / kBeadsPerThread)),
         simd(path),
         kernel(detail::rk4_kernel(path)) {
+    if (!tiled_only && pool.size() == 1 && beads <= kChainBeads)
+      chain_kernel = detail::rk4_chain_kernel(path);
     const int workers = pool.size();
     scratch.resize(workers);
     outputs.resize(workers);
@@ -55,13 +68,19 @@ Integrator::Integrator(const ChainParams& params, Forcing forcing, IntegratorOpt
   state_.psi.assign(params_.beads, 0.0);
   state_.vel.assign(params_.beads, 0.0);
   impl_ = std::make_unique<Impl>(params_.beads, options_.threads,
-                                 options_.simd.value_or(active_simd()));
+                                 options_.simd.value_or(active_simd()), options_.tiled_only);
+  impl_->breakpoints_sorted =
+      std::is_sorted(forcing_.breakpoints.begin(), forcing_.breakpoints.end());
 }
 
 Integrator::~Integrator() = default;
 
 SimdPath Integrator::simd() const {
   return impl_->simd;
+}
+
+bool Integrator::small_chain_kernel() const {
+  return impl_->chain_kernel != nullptr;
 }
 
 double Integrator::force_now() const {
@@ -78,6 +97,27 @@ bool Integrator::step() {
   const double t0 = static_cast<double>(state_.step) * dt;
   const double t1 = static_cast<double>(state_.step + 1) * dt;
   const double snap = 1e-9 * dt;  // closer than this to a grid time counts as on it
+
+  // The common step: no breakpoint in (t0 + snap, t1 + 2 snap] (none cuts it, its end is not
+  // one, with a margin for the rounding of |b - t1| <= snap) and no kick left before
+  // t1 - snap (none is applied at t0, none cuts it). The general code below would make
+  // exactly this one call.
+  Impl& im = *impl_;
+  if (im.breakpoints_sorted) {
+    const auto& bps = forcing_.breakpoints;
+    while (im.next_breakpoint < bps.size() && bps[im.next_breakpoint] <= t0 + snap)
+      ++im.next_breakpoint;
+    const bool no_breakpoint =
+        im.next_breakpoint == bps.size() || bps[im.next_breakpoint] > t1 + 2.0 * snap;
+    const bool no_kick =
+        im.next_kick == forcing_.kicks.size() || forcing_.kicks[im.next_kick].tau >= t1 - snap;
+    if (no_breakpoint && no_kick) {
+      if (!advance_interval(t0, t1, false)) return false;
+      state_.step += 1;
+      state_.tau = t1;
+      return true;
+    }
+  }
 
   // Split the step at the drive's jumps, kinks and kicks that fall strictly inside it.
   std::vector<double>& cuts = cuts_;
@@ -121,7 +161,13 @@ void Integrator::apply_kicks(double up_to) {
 }
 
 double Integrator::drive_at(double tau) const {
-  return state_.string_broken ? 0.0 : forcing_(tau);
+  if (state_.string_broken) return 0.0;
+  const std::uint64_t bits = std::bit_cast<std::uint64_t>(tau);
+  if (bits != impl_->drive_tau) {
+    impl_->drive_f = forcing_(tau);
+    impl_->drive_tau = bits;
+  }
+  return impl_->drive_f;
 }
 
 bool Integrator::rk4(double ta, double tb, bool end_is_breakpoint) {
@@ -142,10 +188,16 @@ bool Integrator::rk4(double ta, double tb, bool end_is_breakpoint) {
   in.broken = &state_.broken;
   in.threshold = params_.breakable() ? params_.threshold : 0.0;
   in.stretch_only = params_.break_on == BreakMode::Stretch;
-  im.pool.run([&](int w) {
-    im.outputs[w].reset();
-    im.kernel(in, im.ranges[w].first, im.ranges[w].second, im.scratch[w], im.outputs[w]);
-  });
+  if (im.chain_kernel && state_.broken.empty()) {
+    // A small chain, no spring broken: one call, no tiles (same bits).
+    im.outputs[0].reset();
+    im.chain_kernel(in, im.outputs[0]);
+  } else {
+    im.pool.run([&](int w) {
+      im.outputs[w].reset();
+      im.kernel(in, im.ranges[w].first, im.ranges[w].second, im.scratch[w], im.outputs[w]);
+    });
+  }
   stage_dissipation_ = 0.0;
   stage_work_ = 0.0;
   bool finite = true;

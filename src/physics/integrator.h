@@ -3,6 +3,9 @@
 // Design note: the four stages are fused and evaluated tile by tile (a few thousand
 // beads with a 4-bead halo) so that one step streams psi and vel through memory once
 // instead of once per stage; results do not depend on the tile size or thread count.
+// A small chain on one worker with no spring broken takes a kernel without tiles, the four
+// stages as a register wavefront (rk4_chain.h, AVX2 and AVX-512): the same bits, 1.5-3.4x
+// the tiled kernel's speed at N = 30 .. 1000 (tests/bench/README.md).
 // A spring that crosses its threshold inside a step is located by cubic Hermite
 // interpolation of phi_j from psi and psi' at both ends (error O(h^4)); the step is
 // redone up to that time, the spring removed, and the rest of the step integrated.
@@ -26,6 +29,9 @@ struct IntegratorOptions {
   // The kernel's instruction set; empty: the process's (active_simd()). Any path gives
   // bit-identical results.
   std::optional<SimdPath> simd = std::nullopt;
+  // Always take the tiled kernel, also where the one-chain kernel would run (a small chain on
+  // one thread, no spring broken). Same bits either way; tests compare the two paths.
+  bool tiled_only = false;
 };
 
 class Integrator {
@@ -46,7 +52,10 @@ class Integrator {
   const ChainState& state() const { return state_; }
   const ChainParams& params() const { return params_; }
   double dt() const { return options_.dt; }
-  SimdPath simd() const;     // the instruction set the kernel runs on
+  SimdPath simd() const;  // the instruction set the kernel runs on
+  // Whether steps take the one-chain kernel (rk4_chain.h) while no spring is broken: one
+  // worker, N < 20000, AVX2 or AVX-512, not tiled_only. Same bits either way.
+  bool small_chain_kernel() const;
   double force_now() const;  // f(tau) acting on bead N now (0 after the pull string broke)
   const std::string& error() const { return error_; }
 

@@ -58,20 +58,22 @@ cb::Forcing ramp_forcing() {
 }
 
 // ---------------------------------------------------------------------------------------
-// Args: {beads, threads, breakable, simd}. Breakable uses a finite threshold no spring can
-// reach, so the result is the same but every step pays for the crossing checks. simd:
-// 0 sse2, 1 avx2, 2 avx512 (cb::SimdPath); a path the CPU lacks is skipped.
-void BM_FusedRK4(benchmark::State& state) {
+// cb::Integrator on a chain from rest, warmed up. Breakable uses a finite threshold no spring
+// can reach, so the result is the same but every step pays for the crossing checks. A path the
+// CPU lacks is skipped.
+void run_fused_rk4(benchmark::State& state, int beads, int threads, bool breakable,
+                   cb::SimdPath simd, bool tiled_only) {
   cb::ChainParams p;
-  p.beads = static_cast<int>(state.range(0));
+  p.beads = beads;
   p.gamma = kGamma;
-  if (state.range(2) != 0) p.threshold = 1e300;
-  const auto simd = static_cast<cb::SimdPath>(state.range(3));
+  if (breakable) p.threshold = 1e300;
   if (!cb::simd_supported(simd)) {
     state.SkipWithError((std::string("no ") + cb::simd_name(simd) + " on this CPU").c_str());
     return;
   }
-  cb::Integrator sim(p, ramp_forcing(), {kDt, static_cast<int>(state.range(1)), simd});
+  cb::IntegratorOptions options{kDt, threads, simd};
+  options.tiled_only = tiled_only;
+  cb::Integrator sim(p, ramp_forcing(), options);
   FusedSim fused{sim};
   warm_up(fused);
   const int steps = steps_per_iteration(p.beads);
@@ -84,6 +86,19 @@ void BM_FusedRK4(benchmark::State& state) {
   benchmark::DoNotOptimize(sim.state().psi.back());
   set_counters(state, p.beads, steps, 32);
   state.counters["subnormal"] = static_cast<double>(beads_subnormal(fused.psi(), fused.vel()));
+}
+
+// Args: {beads, threads, breakable, simd}; simd: 0 sse2, 1 avx2, 2 avx512 (cb::SimdPath).
+void BM_FusedRK4(benchmark::State& state) {
+  run_fused_rk4(state, static_cast<int>(state.range(0)), static_cast<int>(state.range(1)),
+                state.range(2) != 0, static_cast<cb::SimdPath>(state.range(3)), false);
+}
+
+// Args: {beads, simd}. BM_FusedRK4 on one thread with the small-chain kernel turned off
+// (IntegratorOptions::tiled_only): the tiled kernel it replaces, measured in the same run.
+void BM_FusedTiledRK4(benchmark::State& state) {
+  run_fused_rk4(state, static_cast<int>(state.range(0)), 1, false,
+                static_cast<cb::SimdPath>(state.range(1)), true);
 }
 
 // Args: {beads, simd}. The ensemble path of `sweep --solver rk4` (physics/lanes.h): eight
@@ -112,7 +127,8 @@ void BM_LanesRK4(benchmark::State& state) {
       job.last_step = steps;
       return job;
     };
-    cb::run_first_breaks_in_lanes(beads, next, [](std::size_t, const cb::LaneEnd&) {}, simd);
+    cb::run_first_breaks_in_lanes(
+        beads, next, [](std::size_t, const cb::LaneEnd&) {}, simd);
   }
   set_counters(state, std::int64_t{beads} * kValues, steps, 32);
 }
@@ -207,7 +223,10 @@ BENCHMARK(BM_PlainRK4)
     ->Arg(1'000'000)
     ->Arg(10'000'000)
     ->Apply(common);
-BENCHMARK(BM_LanesRK4)->ArgNames({"N", "simd"})->ArgsProduct({{30, 1'000}, {0, 1, 2}})->Apply(common);
+BENCHMARK(BM_LanesRK4)
+    ->ArgNames({"N", "simd"})
+    ->ArgsProduct({{30, 1'000}, {0, 1, 2}})
+    ->Apply(common);
 BENCHMARK(BM_FusedFromRest)->ArgNames({"N", "ftz"})->ArgsProduct({{1'000}, {0, 1}})->Apply(common);
 BENCHMARK(BM_TriadThreads)->Args({10'000'000, 2})->Apply(common);
 // Every instruction set at every N on one thread; two threads only where the Integrator
@@ -217,6 +236,10 @@ BENCHMARK(BM_FusedRK4)
     ->ArgsProduct({{30, 1'000, 1'000'000, 10'000'000}, {1}, {0}, {0, 1, 2}})
     ->ArgsProduct({{1'000'000, 10'000'000}, {2}, {0}, {0, 1, 2}})
     ->Args({1'000'000, 1, 1, 2})
+    ->Apply(common);
+BENCHMARK(BM_FusedTiledRK4)
+    ->ArgNames({"N", "simd"})
+    ->ArgsProduct({{30, 1'000}, {0, 1, 2}})
     ->Apply(common);
 
 // The baseline must solve the same equations: after 500 steps of dt = 0.01 on 1000

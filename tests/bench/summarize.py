@@ -34,6 +34,8 @@ def medians(bench_json):
             out[("native", int(args["N"]))] = b["bead_steps"]
         elif fam == "BM_LanesRK4":
             out[("lanes", int(args["N"]), int(args["simd"]))] = b["bead_steps"]
+        elif fam == "BM_FusedTiledRK4":
+            out[("tiled", int(args["N"]), int(args["simd"]))] = b["bead_steps"]
         elif fam == "BM_FusedRK4":
             key = ("fused", int(args["N"]), int(args["threads"]), int(args["breakable"]),
                    int(args["simd"]))
@@ -83,6 +85,14 @@ def main():
             print(f"- ensemble lanes (8 chains, sweep --solver rk4), N = {n:,}: "
                   + ", ".join(f"{k} {v / M:.1f}" for k, v in lanes.items())
                   + f" M bead-steps/s; best / plain {max(lanes.values()) / plain:.2f}")
+    for n in (30, 1_000):
+        tiled = {i: m[("tiled", n, i)] for i in isas if ("tiled", n, i) in m}
+        if tiled:
+            print(f"- fused, N = {n:,}, 1 thread, tiled kernel forced (tiled_only): "
+                  + ", ".join(f"{ISAS[i]} {v / M:.1f}" for i, v in tiled.items())
+                  + " M bead-steps/s; fused / tiled "
+                  + ", ".join(f"{ISAS[i]} {m[('fused', n, 1, 0, i)] / v:.2f}"
+                              for i, v in tiled.items() if ('fused', n, 1, 0, i) in m))
     for n, v in sorted(numpy.items(), key=lambda kv: int(kv[0])):
         print(f"- numpy, N = {int(n):,}: {v['median'] / M:.2f} M bead-steps/s")
 

@@ -1,0 +1,28 @@
+// Internal: one RK4 step of Eq. (dimless) for a whole chain with every spring intact, without
+// tiles: the small-chain path of issue #13.
+//
+// Design note: at N = 30 .. a few thousand the tiled kernel (rk4_tile.h) spends most of a step
+// on fixed costs: copying the window in and out, finding special beads, and four passes of
+// stage arrays through memory. rk4_chain runs the four stages as a register wavefront along
+// the chain (rk4_chain_kernel.inc), reading the old state and writing the new one in place of
+// the copies, and gives the same bits as rk4_tile on every instruction set. It covers one
+// worker's whole chain and no broken spring; everything else stays on the tiled path. Built
+// for AVX2 and AVX-512 only (rk4_chain_kernel()).
+#pragma once
+
+#include "physics/rk4_tile.h"
+
+namespace cb::detail {
+
+// One step of the whole chain [0, in.beads), *in.broken empty; `out` as rk4_beads fills it.
+using Rk4Chain = void (*)(const StepInput& in, StepOutput& out);
+namespace avx2 {
+void rk4_chain(const StepInput& in, StepOutput& out);
+}
+namespace avx512 {
+void rk4_chain(const StepInput& in, StepOutput& out);
+}
+// The kernel for the path, or null where the tiled kernel is the faster one (SSE2).
+Rk4Chain rk4_chain_kernel(SimdPath path);
+
+}  // namespace cb::detail

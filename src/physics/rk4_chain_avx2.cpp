@@ -1,0 +1,29 @@
+// The one-chain RK4 kernel (rk4_chain_kernel.inc) compiled for AVX2 (4 doubles a vector).
+#include <immintrin.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "physics/rk4_chain.h"
+
+#if defined(__clang__)
+#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
+#else
+#pragma GCC push_options
+#pragma GCC target("avx2")
+#endif
+
+namespace cb::detail::avx2 {
+constexpr int kVec = 4;  // doubles a register
+#include "physics/rk4_chain_kernel.inc"
+}  // namespace cb::detail::avx2
+
+#if defined(__clang__)
+#pragma clang attribute pop
+#else
+#pragma GCC pop_options
+#endif
