@@ -58,9 +58,11 @@ cb::Forcing ramp_forcing() {
 }
 
 // ---------------------------------------------------------------------------------------
-// Args: {beads, threads, breakable, simd}. Breakable uses a finite threshold no spring can
-// reach, so the result is the same but every step pays for the crossing checks. simd:
-// 0 sse2, 1 avx2, 2 avx512 (cb::SimdPath); a path the CPU lacks is skipped.
+// Args: {beads, threads, breakable, simd, block}. Breakable uses a finite threshold no spring
+// can reach, so the result is the same but every step pays for the crossing checks. simd:
+// 0 sse2, 1 avx2, 2 avx512 (cb::SimdPath); a path the CPU lacks is skipped. block: steps per
+// temporal block (IntegratorOptions::block_steps; 1 off, -1 the Integrator's default).
+// At N >= 1e6 an iteration is 16 steps (two blocks of the default 8), blocked or not.
 void BM_FusedRK4(benchmark::State& state) {
   cb::ChainParams p;
   p.beads = static_cast<int>(state.range(0));
@@ -71,10 +73,12 @@ void BM_FusedRK4(benchmark::State& state) {
     state.SkipWithError((std::string("no ") + cb::simd_name(simd) + " on this CPU").c_str());
     return;
   }
-  cb::Integrator sim(p, ramp_forcing(), {kDt, static_cast<int>(state.range(1)), simd});
+  std::optional<int> block;
+  if (state.range(4) >= 0) block = static_cast<int>(state.range(4));
+  cb::Integrator sim(p, ramp_forcing(), {kDt, static_cast<int>(state.range(1)), simd, block});
   FusedSim fused{sim};
   warm_up(fused);
-  const int steps = steps_per_iteration(p.beads);
+  const int steps = p.beads >= 1'000'000 ? 16 : steps_per_iteration(p.beads);
   for (auto _ : state) {
     if (!sim.advance_to(sim.state().step + steps)) {
       state.SkipWithError(sim.error().c_str());
@@ -112,7 +116,8 @@ void BM_LanesRK4(benchmark::State& state) {
       job.last_step = steps;
       return job;
     };
-    cb::run_first_breaks_in_lanes(beads, next, [](std::size_t, const cb::LaneEnd&) {}, simd);
+    cb::run_first_breaks_in_lanes(
+        beads, next, [](std::size_t, const cb::LaneEnd&) {}, simd);
   }
   set_counters(state, std::int64_t{beads} * kValues, steps, 32);
 }
@@ -207,16 +212,22 @@ BENCHMARK(BM_PlainRK4)
     ->Arg(1'000'000)
     ->Arg(10'000'000)
     ->Apply(common);
-BENCHMARK(BM_LanesRK4)->ArgNames({"N", "simd"})->ArgsProduct({{30, 1'000}, {0, 1, 2}})->Apply(common);
+BENCHMARK(BM_LanesRK4)
+    ->ArgNames({"N", "simd"})
+    ->ArgsProduct({{30, 1'000}, {0, 1, 2}})
+    ->Apply(common);
 BENCHMARK(BM_FusedFromRest)->ArgNames({"N", "ftz"})->ArgsProduct({{1'000}, {0, 1}})->Apply(common);
 BENCHMARK(BM_TriadThreads)->Args({10'000'000, 2})->Apply(common);
 // Every instruction set at every N on one thread; two threads only where the Integrator
 // uses them (N >= 20000 per extra worker).
+// At N >= 1e6, temporal blocking off (block 1) and on (8) side by side; SSE2 unblocked only.
 BENCHMARK(BM_FusedRK4)
-    ->ArgNames({"N", "threads", "breakable", "simd"})
-    ->ArgsProduct({{30, 1'000, 1'000'000, 10'000'000}, {1}, {0}, {0, 1, 2}})
-    ->ArgsProduct({{1'000'000, 10'000'000}, {2}, {0}, {0, 1, 2}})
-    ->Args({1'000'000, 1, 1, 2})
+    ->ArgNames({"N", "threads", "breakable", "simd", "block"})
+    ->ArgsProduct({{30, 1'000}, {1}, {0}, {0, 1, 2}, {-1}})
+    ->ArgsProduct({{1'000'000, 10'000'000}, {1, 2}, {0}, {0}, {1}})
+    ->ArgsProduct({{1'000'000, 10'000'000}, {1, 2}, {0}, {1, 2}, {1, 8}})
+    ->Args({1'000'000, 1, 1, 2, 1})
+    ->Args({1'000'000, 1, 1, 2, 8})
     ->Apply(common);
 
 // The baseline must solve the same equations: after 500 steps of dt = 0.01 on 1000

@@ -1,0 +1,183 @@
+// Temporal blocking (physics/temporal_block.h): a run with blocks gives the same bytes as
+// the same run stepped one step at a time -- psi, vel, broken springs, break times, energy
+// books -- on every SIMD path the CPU has, with 1 and 2 threads, with friction, a ramp that
+// stops, kicks, breaking inside what would be a block, and the pull string.
+#include <catch2/catch.hpp>
+#include <cstring>
+
+#include "physics/integrator.h"
+#include "physics/run_loop.h"
+#include "physics/simd.h"
+
+namespace {
+
+struct Scene {
+  const char* name;
+  cb::ChainParams chain;
+  cb::Forcing forcing;
+  double dt = 0.01;
+  std::int64_t steps = 0;
+  int threads = 1;
+  std::int64_t observe_every = 0;  // an observer every this many steps; 0: none
+  bool at_first_break = false;
+};
+
+// f = beta tau up to t_stop, then constant: a kink at t_stop, which falls inside a step
+// (the step is split there) unless t_stop is on the grid.
+cb::Forcing ramp(double beta, double t_stop, std::vector<cb::Kick> kicks = {}) {
+  cb::Forcing f;
+  f.f = [beta, t_stop](double tau) { return beta * std::min(tau, t_stop); };
+  f.breakpoints = {t_stop};
+  f.kicks = std::move(kicks);
+  return f;
+}
+
+std::vector<Scene> scenes() {
+  std::vector<Scene> out;
+  {
+    // Several tiles on one thread: friction, a ramp whose kink splits a step, kicks inside a
+    // step and on the grid, an observer every 5 steps (blocks shorter than block_steps).
+    Scene s{"N=5000 friction ramp kicks", {}, ramp(0.02, 0.8355, {{0.3333, 0.5}, {0.6, -0.25}})};
+    s.chain.beads = 5000;
+    s.chain.gamma = 0.05;
+    s.chain.threshold = 2.0;
+    s.steps = 400;
+    s.observe_every = 5;
+    out.push_back(s);
+  }
+  {
+    // Two workers, ~200 tiles, a kick in the middle of the run and friction.
+    Scene s{"N=100003 2 threads friction kick", {}, ramp(0.05, 1.5, {{1.004, 1.0}})};
+    s.chain.beads = 100003;
+    s.chain.gamma = 0.1;
+    s.chain.threshold = 5.0;
+    s.steps = 300;
+    s.threads = 2;
+    out.push_back(s);
+  }
+  {
+    // Springs near bead N break (several of them, at times no block boundary knows of);
+    // the steps around each break go one at a time, the rest in blocks.
+    Scene s{"N=5000 breaking", {}, ramp(0.4, 1e9)};
+    s.chain.beads = 5000;
+    s.chain.gamma = 0.02;
+    s.chain.threshold = 0.5;
+    s.steps = 600;
+    out.push_back(s);
+  }
+  {
+    // The same with two threads at ~1e5 beads, stopping at the first break as break maps do.
+    Scene s{"N=100003 2 threads first break", {}, ramp(0.4, 1e9)};
+    s.chain.beads = 100003;
+    s.chain.gamma = 0.02;
+    s.chain.threshold = 0.5;
+    s.chain.break_on = cb::BreakMode::Stretch;
+    s.steps = 2000;
+    s.threads = 2;
+    s.at_first_break = true;
+    out.push_back(s);
+  }
+  {
+    // The pull string breaks when f reaches phi_c: a step the block must not take.
+    Scene s{"N=5000 pull string", {}, ramp(0.1, 1e9)};
+    s.chain.beads = 5000;
+    s.chain.threshold = 0.6543;
+    s.chain.pull_string = true;
+    s.steps = 1000;
+    out.push_back(s);
+  }
+  return out;
+}
+
+struct Run {
+  cb::ChainState state;
+  std::vector<std::int64_t> observed;  // steps the observer saw
+  std::int64_t blocked_steps = 0;      // steps taken inside blocks (by counting step_up_to)
+};
+
+Run run(const Scene& sc, cb::SimdPath path, int block) {
+  cb::IntegratorOptions o{sc.dt, sc.threads, path, block};
+  cb::Integrator sim(sc.chain, sc.forcing, o);
+  REQUIRE(sim.block_steps() == std::max(1, block));
+  Run r;
+  std::vector<cb::Observer> observers;
+  if (sc.observe_every > 0)
+    observers.push_back({sc.observe_every, true,
+                         [&](const cb::Integrator& s) { r.observed.push_back(s.state().step); }});
+  // Through the one run loop, as every command steps; the block count from a second
+  // integrator stepped by hand the same way.
+  REQUIRE(cb::run_until(sim, {sc.steps, std::nullopt, sc.at_first_break, nullptr}, observers) ==
+          cb::RunEnd::Reached);
+  r.state = sim.state();
+  if (block > 1 && !sc.at_first_break) {
+    cb::Integrator by_hand(sc.chain, sc.forcing, o);
+    while (by_hand.state().step < sc.steps) {
+      const std::int64_t step = by_hand.state().step;
+      std::int64_t room = sc.steps - step;
+      if (sc.observe_every > 0) room = std::min(room, sc.observe_every - step % sc.observe_every);
+      const int taken = by_hand.step_up_to(room);
+      REQUIRE(taken > 0);
+      if (taken > 1) r.blocked_steps += taken;
+    }
+  }
+  return r;
+}
+
+bool same_doubles(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
+}
+bool same_double(double a, double b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+}  // namespace
+
+TEST_CASE("temporal blocking gives the bytes of one step at a time on every SIMD path",
+          "[blocking]") {
+  for (const Scene& sc : scenes()) {
+    SECTION(sc.name) {
+      for (cb::SimdPath path : {cb::SimdPath::Sse2, cb::SimdPath::Avx2, cb::SimdPath::Avx512}) {
+        if (!cb::simd_supported(path)) {
+          WARN("this CPU has no " << cb::simd_name(path) << ": path not checked");
+          continue;
+        }
+        INFO(cb::simd_name(path));
+        const Run off = run(sc, path, 1);
+        const Run on = run(sc, path, 8);
+        if (!sc.at_first_break) {
+          // Not vacuous: most steps went through blocks.
+          CHECK(on.blocked_steps > sc.steps / 2);
+        }
+        CHECK(on.state.step == off.state.step);
+        CHECK(on.observed == off.observed);
+        CHECK(same_doubles(on.state.psi, off.state.psi));
+        CHECK(same_doubles(on.state.vel, off.state.vel));
+        CHECK(on.state.broken == off.state.broken);
+        CHECK(on.state.string_broken == off.state.string_broken);
+        CHECK(same_double(on.state.tau, off.state.tau));
+        CHECK(same_double(on.state.dissipated, off.state.dissipated));
+        CHECK(same_double(on.state.work, off.state.work));
+        CHECK(same_double(on.state.break_loss, off.state.break_loss));
+        REQUIRE(on.state.breaks.size() == off.state.breaks.size());
+        for (std::size_t i = 0; i < on.state.breaks.size(); ++i) {
+          CHECK(on.state.breaks[i].spring == off.state.breaks[i].spring);
+          CHECK(same_double(on.state.breaks[i].tau, off.state.breaks[i].tau));
+          CHECK(on.state.breaks[i].step == off.state.breaks[i].step);
+        }
+        // The scenes that are about breaking must break (else they test nothing new).
+        if (sc.chain.threshold < 1.0) CHECK(!off.state.breaks.empty());
+        if (sc.chain.gamma > 0.0) CHECK(off.state.dissipated > 0.0);
+      }
+    }
+  }
+}
+
+TEST_CASE("blocking is on by default only for long chains, and 0 or 1 turns it off", "[blocking]") {
+  cb::ChainParams small, large;
+  small.beads = cb::kBlockMinBeads - 1;
+  large.beads = cb::kBlockMinBeads;
+  CHECK(cb::Integrator(small, {}, {0.01, 1}).block_steps() == 1);
+  CHECK(cb::Integrator(large, {}, {0.01, 1}).block_steps() == cb::kDefaultBlockSteps);
+  CHECK(cb::Integrator(large, {}, {0.01, 1, std::nullopt, 0}).block_steps() == 1);
+  CHECK(cb::Integrator(large, {}, {0.01, 1, std::nullopt, 1}).block_steps() == 1);
+}
