@@ -308,3 +308,13 @@ TEST_CASE("a block's states and per-step sums equal the one-step kernel's on a m
     }
   }
 }
+
+TEST_CASE("CHAINBREAK_BLOCK_STEPS values: auto, 0 to 64, anything else an error", "[blocking]") {
+  CHECK(!cb::block_steps_from_setting(nullptr));
+  CHECK(!cb::block_steps_from_setting("auto"));
+  CHECK(cb::block_steps_from_setting("0") == 0);
+  CHECK(cb::block_steps_from_setting("16") == 16);
+  for (const char* bad : {"-1", "65", "8x", "eight", " 8"})
+    CHECK_THROWS_WITH(cb::block_steps_from_setting(bad),
+                      Catch::Contains("CHAINBREAK_BLOCK_STEPS=") && Catch::Contains("0 (no"));
+}

@@ -4,10 +4,13 @@
 #include <atomic>
 #include <bit>
 #include <cassert>
+#include <charconv>
 #include <cmath>
 #include <complex>
 #include <cstdint>
+#include <cstdlib>
 #include <sstream>
+#include <string_view>
 
 #include "physics/crossing.h"
 #include "physics/rk4_tile.h"
@@ -94,13 +97,31 @@ Integrator::Integrator(const ChainParams& params, Forcing forcing, IntegratorOpt
   assert(params_.beads >= 1 && options_.dt > 0.0);
   state_.psi.assign(params_.beads, 0.0);
   state_.vel.assign(params_.beads, 0.0);
-  const int block =
-      options_.block_steps.value_or(params_.beads >= kBlockMinBeads ? kDefaultBlockSteps : 1);
+  const int block = options_.block_steps.value_or(
+      active_block_steps().value_or(params_.beads >= kBlockMinBeads ? kDefaultBlockSteps : 1));
   impl_ = std::make_unique<Impl>(params_.beads, options_.threads,
                                  options_.simd.value_or(active_simd()), block);
 }
 
 Integrator::~Integrator() = default;
+
+std::optional<int> block_steps_from_setting(const char* value) {
+  const std::string_view v = value ? value : "";
+  if (v.empty() || v == "auto") return std::nullopt;
+  int steps = -1;
+  const auto [end, err] = std::from_chars(v.data(), v.data() + v.size(), steps);
+  if (err != std::errc() || end != v.data() + v.size() || steps < 0 || steps > kMaxBlockSteps)
+    throw SimdChoiceError("CHAINBREAK_BLOCK_STEPS=" + std::string(v) +
+                          ": expected auto or a step count from 0 (no temporal blocking) to " +
+                          std::to_string(kMaxBlockSteps));
+  return steps;
+}
+
+std::optional<int> active_block_steps() {
+  static const std::optional<int> steps =
+      block_steps_from_setting(std::getenv("CHAINBREAK_BLOCK_STEPS"));
+  return steps;
+}
 
 SimdPath Integrator::simd() const {
   return impl_->simd;

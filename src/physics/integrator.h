@@ -34,6 +34,15 @@ struct IntegratorOptions {
 
 inline constexpr int kDefaultBlockSteps = 8;
 inline constexpr int kBlockMinBeads = 65536;  // below this, the chain stays in L2 anyway
+inline constexpr int kMaxBlockSteps = 64;
+
+// A CHAINBREAK_BLOCK_STEPS value: null, "" or "auto" give nothing (the default above), else a
+// step count from 0 (off) to kMaxBlockSteps for every integrator of the process. Throws
+// SimdChoiceError (a kernel setting the user can fix) naming the variable and what it takes.
+std::optional<int> block_steps_from_setting(const char* value);
+// CHAINBREAK_BLOCK_STEPS read on the first call (which may throw; the command line calls it
+// at start-up): what an IntegratorOptions without block_steps uses.
+std::optional<int> active_block_steps();
 
 class Integrator {
  public:
