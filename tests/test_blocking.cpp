@@ -318,3 +318,18 @@ TEST_CASE("CHAINBREAK_BLOCK_STEPS values: auto, 0 to 64, anything else an error"
     CHECK_THROWS_WITH(cb::block_steps_from_setting(bad),
                       Catch::Contains("CHAINBREAK_BLOCK_STEPS=") && Catch::Contains("0 (no"));
 }
+
+TEST_CASE("a coarse observer (progress) sees the run after each block, an exact one each step",
+          "[blocking]") {
+  cb::ChainParams chain;
+  chain.beads = 5000;
+  cb::Integrator sim(chain, ramp(0.1, 1e9), {0.01, 1, std::nullopt, 8});
+  std::vector<std::int64_t> coarse, exact;
+  std::vector<cb::Observer> observers = {
+      {1, false, [&](const cb::Integrator& s) { coarse.push_back(s.state().step); }, true},
+      {12, false, [&](const cb::Integrator& s) { exact.push_back(s.state().step); }}};
+  REQUIRE(cb::run_until(sim, {40, std::nullopt, false, nullptr}, observers) == cb::RunEnd::Reached);
+  // Blocks of 8 cut at the exact observer's steps 12, 24 and 36 and at the end (40).
+  CHECK(coarse == std::vector<std::int64_t>{8, 12, 20, 24, 32, 36, 40});
+  CHECK(exact == std::vector<std::int64_t>{12, 24, 36});
+}

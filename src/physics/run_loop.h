@@ -38,6 +38,10 @@ struct Observer {
   std::int64_t every = 1;
   bool at_start = false;
   std::function<void(const Integrator&)> see;
+  // A progress report: it may be called once after a temporal block of steps
+  // (IntegratorOptions::block_steps) that passed a multiple of `every`, instead of at that
+  // step, so it does not cut the run into single steps.
+  bool coarse = false;
 };
 
 enum class RunEnd {
