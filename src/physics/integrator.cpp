@@ -69,6 +69,7 @@ struct Integrator::Impl {
   std::vector<int> block_result;
   std::vector<detail::PlainStep> plain;
   std::int64_t no_block_before = 0;
+  int failed_blocks = 0;  // blocks in a row that failed
 
   Impl(int beads, int threads, SimdPath path, int block)
       : psi_next(beads),
@@ -183,8 +184,16 @@ int Integrator::step_up_to(std::int64_t max_steps) {
       ++plain;
     if (plain == count) {
       const int failed = step_block(count);
-      if (failed < 0) return count;
-      im.no_block_before = state_.step + failed + 1;
+      if (failed < 0) {
+        im.failed_blocks = 0;
+        return count;
+      }
+      // A failed block costs up to a pass of `count` steps for nothing. One break is cheap,
+      // but where breaks come thick (a cascade) every try would fail: after the second
+      // failure in a row, wait count, 2 count, ... (at most 64 count) more steps.
+      const int streak = im.failed_blocks++;
+      const std::int64_t wait = streak == 0 ? 0 : std::int64_t{count} << std::min(streak - 1, 6);
+      im.no_block_before = state_.step + failed + 1 + wait;
     } else {
       im.no_block_before = state_.step + plain + 1;
     }
