@@ -168,6 +168,17 @@ TEST_CASE("temporal blocking gives the bytes of one step at a time on every SIMD
           CHECK(same_double(on.state.breaks[i].tau, off.state.breaks[i].tau));
           CHECK(on.state.breaks[i].step == off.state.breaks[i].step);
         }
+        // Two threads blocked give the bytes of one thread blocked (as they do unblocked).
+        if (sc.threads > 1) {
+          Scene one = sc;
+          one.threads = 1;
+          const Run single = run(one, path, 8);
+          CHECK(same_doubles(single.state.psi, on.state.psi));
+          CHECK(same_doubles(single.state.vel, on.state.vel));
+          CHECK(same_double(single.state.dissipated, on.state.dissipated));
+          CHECK(same_double(single.state.work, on.state.work));
+          CHECK(single.state.breaks.size() == on.state.breaks.size());
+        }
         // The scenes that are about breaking must break (else they test nothing new).
         if (sc.chain.threshold < 1.0) CHECK(!off.state.breaks.empty());
         if (sc.chain.gamma > 0.0) CHECK(off.state.dissipated > 0.0);

@@ -96,6 +96,7 @@ struct Integrator::Impl {
 Integrator::Integrator(const ChainParams& params, Forcing forcing, IntegratorOptions options)
     : params_(params), forcing_(std::move(forcing)), options_(options) {
   assert(params_.beads >= 1 && options_.dt > 0.0);
+  assert(!options_.block_steps || *options_.block_steps <= kMaxBlockSteps);
   state_.psi.assign(params_.beads, 0.0);
   state_.vel.assign(params_.beads, 0.0);
   const int block = options_.block_steps.value_or(

@@ -34,7 +34,7 @@ struct IntegratorOptions {
 
 inline constexpr int kDefaultBlockSteps = 8;
 inline constexpr int kBlockMinBeads = 65536;  // below this, the chain stays in L2 anyway
-inline constexpr int kMaxBlockSteps = 64;
+inline constexpr int kMaxBlockSteps = 64;     // the most block_steps may be
 
 // A CHAINBREAK_BLOCK_STEPS value: null, "" or "auto" give nothing (the default above), else a
 // step count from 0 (off) to kMaxBlockSteps for every integrator of the process. Throws
