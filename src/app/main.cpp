@@ -9,6 +9,7 @@
 #include "drive/drive.h"
 #include "gl/gl_context.h"
 #include "output/output_file.h"
+#include "physics/integrator.h"
 #include "physics/simd.h"
 #include "resources/resources.h"
 #include "version.h"
@@ -226,7 +227,8 @@ int main(int argc, char** argv) {
   }
 
   try {
-    cb::active_simd();  // a bad CHAINBREAK_SIMD is a user error before any work
+    cb::active_simd();         // a bad CHAINBREAK_SIMD is a user error before any work
+    cb::active_block_steps();  // and so is a bad CHAINBREAK_BLOCK_STEPS
     const auto overrides = parse_overrides(sets);
     if (run_cmd->parsed()) {
       run.overrides = overrides;

@@ -65,7 +65,8 @@ RunOutcome run_rk4(const SceneDesc& scene, const RunRequest& req, RowSink* sink)
   const StopRule stop{last, scene.integrator.after_break, false, req.stop};
   std::vector<Observer> observers;
   if (sink) observers.push_back({req.every, true, [&](const Integrator&) { write_row(); }});
-  observers.push_back({1, false, [&](const Integrator& s) { report(req, s.state().step); }});
+  observers.push_back(
+      {1, false, [&](const Integrator& s) { report(req, s.state().step); }, /*coarse=*/true});
   switch (run_until(sim, stop, observers)) {
     case RunEnd::Reached:
       break;

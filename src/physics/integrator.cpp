@@ -1,17 +1,22 @@
 #include "physics/integrator.h"
 
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cassert>
+#include <charconv>
 #include <cmath>
 #include <complex>
 #include <cstdint>
+#include <cstdlib>
 #include <sstream>
+#include <string_view>
 
 #include "physics/crossing.h"
 #include "physics/rk4_chain.h"
 #include "physics/rk4_tile.h"
 #include "physics/run_loop.h"
+#include "physics/temporal_block.h"
 #include "physics/worker_pool.h"
 
 namespace cb {
@@ -22,6 +27,31 @@ namespace {
 constexpr int kBeadsPerThread = 20000;
 // Up to this many beads a chain on one worker takes the one-chain kernel (rk4_chain.h).
 constexpr int kChainBeads = 20000;
+
+// One step's energy books from the workers' stage sums (Out(w) is worker w's StepOutput),
+// added in worker order: the one reduction of both the one-step path and a temporal block,
+// so their books cannot differ by the order of additions.
+struct StepBooks {
+  double dissipated = 0.0, work = 0.0;
+  bool finite = true;
+};
+template <class Out>
+StepBooks step_books(int workers, Out out, const double force[3], double h) {
+  StepBooks b;
+  const double weights[4] = {1.0, 2.0, 2.0, 1.0};
+  const double forces[4] = {force[0], force[1], force[1], force[2]};
+  for (int w = 0; w < workers; ++w) {
+    const detail::StepOutput& o = out(w);
+    b.finite = b.finite && o.finite;
+    for (int s = 0; s < 4; ++s) {
+      b.dissipated += weights[s] * o.dissipation_rate[s];
+      b.work += weights[s] * forces[s] * o.end_velocity[s];
+    }
+  }
+  b.dissipated *= h / 6.0;
+  b.work *= h / 6.0;
+  return b;
+}
 
 }  // namespace
 
@@ -42,18 +72,32 @@ struct Integrator::Impl {
   SimdPath simd;
   detail::Rk4Beads kernel;
   detail::Rk4Chain chain_kernel = nullptr;  // null: always tiled
+  // Temporal blocking: steps per block (1: off), each worker's buffers and answer, the
+  // steps of the block being tried, and the first step a block may start at again after
+  // one failed (its steps up to the failure go one at a time).
+  int block_steps;
+  std::vector<detail::BlockScratch> blocks;
+  std::vector<int> block_result;
+  std::vector<detail::PlainStep> plain;
+  std::int64_t no_block_before = 0;
+  int failed_blocks = 0;  // blocks in a row that failed
 
-  Impl(int beads, int threads, SimdPath path, bool tiled_only)
+  Impl(int beads, int threads, SimdPath path, bool tiled_only, int block)
       : psi_next(beads),
         vel_next(beads),
         pool(std::clamp(threads, 1, 1 + beads / kBeadsPerThread)),
         simd(path),
-        kernel(detail::rk4_kernel(path)) {
+        kernel(detail::rk4_kernel(path)),
+        block_steps(std::max(1, block)) {
     if (!tiled_only && pool.size() == 1 && beads <= kChainBeads)
       chain_kernel = detail::rk4_chain_kernel(path);
     const int workers = pool.size();
     scratch.resize(workers);
     outputs.resize(workers);
+    if (block_steps > 1) {
+      blocks.resize(workers);
+      block_result.resize(workers);
+    }
     const int tiles = (beads + detail::kTile - 1) / detail::kTile;
     for (int w = 0; w < workers; ++w) {
       const int t0 = tiles * w / workers, t1 = tiles * (w + 1) / workers;
@@ -65,15 +109,36 @@ struct Integrator::Impl {
 Integrator::Integrator(const ChainParams& params, Forcing forcing, IntegratorOptions options)
     : params_(params), forcing_(std::move(forcing)), options_(options) {
   assert(params_.beads >= 1 && options_.dt > 0.0);
+  assert(!options_.block_steps || *options_.block_steps <= kMaxBlockSteps);
   state_.psi.assign(params_.beads, 0.0);
   state_.vel.assign(params_.beads, 0.0);
+  const int block = options_.block_steps.value_or(
+      active_block_steps().value_or(params_.beads >= kBlockMinBeads ? kDefaultBlockSteps : 1));
   impl_ = std::make_unique<Impl>(params_.beads, options_.threads,
-                                 options_.simd.value_or(active_simd()), options_.tiled_only);
+                                 options_.simd.value_or(active_simd()), options_.tiled_only, block);
   impl_->breakpoints_sorted =
       std::is_sorted(forcing_.breakpoints.begin(), forcing_.breakpoints.end());
 }
 
 Integrator::~Integrator() = default;
+
+std::optional<int> block_steps_from_setting(const char* value) {
+  const std::string_view v = value ? value : "";
+  if (v.empty() || v == "auto") return std::nullopt;
+  int steps = -1;
+  const auto [end, err] = std::from_chars(v.data(), v.data() + v.size(), steps);
+  if (err != std::errc() || end != v.data() + v.size() || steps < 0 || steps > kMaxBlockSteps)
+    throw SimdChoiceError("CHAINBREAK_BLOCK_STEPS=" + std::string(v) +
+                          ": expected auto or a step count from 0 (no temporal blocking) to " +
+                          std::to_string(kMaxBlockSteps));
+  return steps;
+}
+
+std::optional<int> active_block_steps() {
+  static const std::optional<int> steps =
+      block_steps_from_setting(std::getenv("CHAINBREAK_BLOCK_STEPS"));
+  return steps;
+}
 
 SimdPath Integrator::simd() const {
   return impl_->simd;
@@ -81,6 +146,10 @@ SimdPath Integrator::simd() const {
 
 bool Integrator::small_chain_kernel() const {
   return impl_->chain_kernel != nullptr;
+}
+
+int Integrator::block_steps() const {
+  return impl_->block_steps;
 }
 
 double Integrator::force_now() const {
@@ -145,6 +214,102 @@ bool Integrator::step() {
   return true;
 }
 
+int Integrator::step_up_to(std::int64_t max_steps) {
+  Impl& im = *impl_;
+  const int count = static_cast<int>(std::min<std::int64_t>(im.block_steps, max_steps));
+  if (count >= 2 && state_.step >= im.no_block_before && error_.empty()) {
+    im.plain.resize(count);
+    int plain = 0;
+    while (plain < count &&
+           plain_step(state_.step + plain, &im.plain[plain].h, im.plain[plain].force))
+      ++plain;
+    if (plain == count) {
+      const int failed = step_block(count);
+      if (failed < 0) {
+        im.failed_blocks = 0;
+        return count;
+      }
+      // A failed block costs up to a pass of `count` steps for nothing. One break is cheap,
+      // but where breaks come thick (a cascade) every try would fail: after the second
+      // failure in a row, wait count, 2 count, ... (at most 64 count) more steps.
+      const int streak = im.failed_blocks++;
+      const std::int64_t wait = streak == 0 ? 0 : std::int64_t{count} << std::min(streak - 1, 6);
+      im.no_block_before = state_.step + failed + 1 + wait;
+    } else {
+      im.no_block_before = state_.step + plain + 1;
+    }
+  }
+  return step() ? 1 : 0;
+}
+
+// Whether step() would take `step` as one plain RK4 step: no kick at its start, no jump,
+// kink or kick inside it, and no pull-string crossing in it. If so, the step's h and the
+// drive at its stages, computed exactly as step() and rk4() compute them.
+bool Integrator::plain_step(std::int64_t step, double* h, double force[3]) const {
+  const double dt = options_.dt;
+  const double t0 = static_cast<double>(step) * dt;
+  const double t1 = static_cast<double>(step + 1) * dt;
+  const double snap = 1e-9 * dt;
+  for (double b : forcing_.breakpoints)
+    if (b > t0 + snap && b < t1 - snap) return false;
+  for (const Kick& k : forcing_.kicks)
+    if (k.tau > t0 + snap && k.tau < t1 - snap) return false;
+  const std::size_t next = impl_->next_kick;
+  if (next < forcing_.kicks.size() && forcing_.kicks[next].tau <= t0 + snap) return false;
+  bool end_is_breakpoint = false;
+  for (double b : forcing_.breakpoints)
+    if (std::abs(b - t1) <= snap) end_is_breakpoint = true;
+  *h = t1 - t0;
+  const double t_end = end_is_breakpoint ? std::nextafter(t1, t0) : t1;
+  force[0] = drive_at(t0);
+  force[1] = drive_at(0.5 * (t0 + t1));
+  force[2] = drive_at(t_end);
+  if (params_.pull_string && params_.breakable() && !state_.string_broken) {
+    const double t = detail::first_time_at_least(
+        forcing_.f ? forcing_.f : [](double) { return 0.0; }, force[2], t0, t1, params_.threshold);
+    if (t >= 0.0) return false;
+  }
+  return true;
+}
+
+// `count` plain steps (impl_->plain) as one temporal block over the whole chain, committed
+// only if no step of it breaks a spring or stops being finite.
+int Integrator::step_block(int count) {
+  Impl& im = *impl_;
+  detail::StepInput in;
+  in.psi = state_.psi.data();
+  in.vel = state_.vel.data();
+  in.psi_out = im.psi_next.data();
+  in.vel_out = im.vel_next.data();
+  in.beads = params_.beads;
+  in.gamma = params_.gamma;
+  in.broken = &state_.broken;
+  in.threshold = params_.breakable() ? params_.threshold : 0.0;
+  in.stretch_only = params_.break_on == BreakMode::Stretch;
+  std::atomic<bool> abort{false};
+  im.pool.run([&](int w) {
+    im.block_result[w] =
+        detail::rk4_blocked(im.kernel, in, im.plain, im.ranges[w].first, im.ranges[w].second,
+                            im.scratch[w], im.blocks[w], abort);
+  });
+  int failed = count;
+  for (int r : im.block_result)
+    if (r >= 0) failed = std::min(failed, r);
+  if (abort.load()) return failed;
+  state_.psi.swap(im.psi_next);
+  state_.vel.swap(im.vel_next);
+  for (int k = 0; k < count; ++k) {
+    const StepBooks books = step_books(
+        im.pool.size(), [&](int w) -> const detail::StepOutput& { return im.blocks[w].steps[k]; },
+        im.plain[k].force, im.plain[k].h);
+    state_.dissipated += books.dissipated;
+    state_.work += books.work;
+  }
+  state_.step += count;
+  state_.tau = static_cast<double>(state_.step) * options_.dt;
+  return -1;
+}
+
 void Integrator::apply_kicks(double up_to) {
   // A kick is a delta force: bead N's velocity jumps, and the drive does the work
   // (v + s)^2 / 2 - v^2 / 2 on it. Kicks are not transmitted once the pull string broke.
@@ -198,21 +363,12 @@ bool Integrator::rk4(double ta, double tb, bool end_is_breakpoint) {
       im.kernel(in, im.ranges[w].first, im.ranges[w].second, im.scratch[w], im.outputs[w]);
     });
   }
-  stage_dissipation_ = 0.0;
-  stage_work_ = 0.0;
-  bool finite = true;
-  const double weights[4] = {1.0, 2.0, 2.0, 1.0};
-  const double forces[4] = {in.force[0], in.force[1], in.force[1], in.force[2]};
-  for (const auto& out : im.outputs) {
-    finite = finite && out.finite;
-    for (int s = 0; s < 4; ++s) {
-      stage_dissipation_ += weights[s] * out.dissipation_rate[s];
-      stage_work_ += weights[s] * forces[s] * out.end_velocity[s];
-    }
-  }
-  stage_dissipation_ *= in.h / 6.0;
-  stage_work_ *= in.h / 6.0;
-  return finite;
+  const StepBooks books = step_books(
+      im.pool.size(), [&](int w) -> const detail::StepOutput& { return im.outputs[w]; }, in.force,
+      in.h);
+  stage_dissipation_ = books.dissipated;
+  stage_work_ = books.work;
+  return books.finite;
 }
 
 void Integrator::commit(double tb) {

@@ -29,10 +29,26 @@ struct IntegratorOptions {
   // The kernel's instruction set; empty: the process's (active_simd()). Any path gives
   // bit-identical results.
   std::optional<SimdPath> simd = std::nullopt;
+  // Temporal blocking (physics/temporal_block.h): up to this many steps per pass over the
+  // chain while it sits in cache, bit-identical to stepping one at a time; 0 or 1: off.
+  // Empty: kDefaultBlockSteps for chains of at least kBlockMinBeads beads, else off.
+  std::optional<int> block_steps = std::nullopt;
   // Always take the tiled kernel, also where the one-chain kernel would run (a small chain on
   // one thread, no spring broken). Same bits either way; tests compare the two paths.
   bool tiled_only = false;
 };
+
+inline constexpr int kDefaultBlockSteps = 8;
+inline constexpr int kBlockMinBeads = 65536;  // below this, the chain stays in L2 anyway
+inline constexpr int kMaxBlockSteps = 64;     // the most block_steps may be
+
+// A CHAINBREAK_BLOCK_STEPS value: null, "" or "auto" give nothing (the default above), else a
+// step count from 0 (off) to kMaxBlockSteps for every integrator of the process. Throws
+// SimdChoiceError (a kernel setting the user can fix) naming the variable and what it takes.
+std::optional<int> block_steps_from_setting(const char* value);
+// CHAINBREAK_BLOCK_STEPS read on the first call (which may throw; the command line calls it
+// at start-up): what an IntegratorOptions without block_steps uses.
+std::optional<int> active_block_steps();
 
 class Integrator {
  public:
@@ -45,6 +61,11 @@ class Integrator {
   // breakpoints and breaking springs. Returns false and sets error() when the state
   // stops being finite.
   bool step();
+  // Advances at least one and at most `max_steps` steps, with the same result as as many
+  // step() calls; more than one only as a temporal block (IntegratorOptions::block_steps),
+  // which never holds a break, so a break can only fall in the last step taken. Returns the
+  // steps taken, 0 when the state stopped being finite (error() says why).
+  int step_up_to(std::int64_t max_steps);
   // Steps until `target_step`; stops early on a non-finite state. Shorthand for run_until
   // (physics/run_loop.h) with a step count as the only stop rule.
   bool advance_to(std::int64_t target_step);
@@ -52,10 +73,11 @@ class Integrator {
   const ChainState& state() const { return state_; }
   const ChainParams& params() const { return params_; }
   double dt() const { return options_.dt; }
-  SimdPath simd() const;  // the instruction set the kernel runs on
   // Whether steps take the one-chain kernel (rk4_chain.h) while no spring is broken: one
   // worker, N < 20000, AVX2 or AVX-512, not tiled_only. Same bits either way.
   bool small_chain_kernel() const;
+  SimdPath simd() const;     // the instruction set the kernel runs on
+  int block_steps() const;   // steps per temporal block; 1 when blocking is off
   double force_now() const;  // f(tau) acting on bead N now (0 after the pull string broke)
   const std::string& error() const { return error_; }
 
@@ -73,6 +95,8 @@ class Integrator {
   double stage_work_ = 0.0;
 
   bool advance_interval(double t_from, double t_to, bool end_is_breakpoint);
+  bool plain_step(std::int64_t step, double* h, double force[3]) const;
+  int step_block(int count);  // -1 when done, else the first step found not plain
   bool rk4(double t_from, double t_to, bool end_is_breakpoint);  // into the scratch state
   void commit(double t_to);
   void apply_kicks(double up_to);

@@ -21,10 +21,14 @@ inline constexpr int kTile = 512;
 
 // Everything one RK4 step needs besides the arrays.
 struct StepInput {
-  const double* psi = nullptr;  // old state, N beads
+  const double* psi = nullptr;  // old state: bead i (0-based) at psi[i - base]
   const double* vel = nullptr;
-  double* psi_out = nullptr;  // new state
+  double* psi_out = nullptr;  // new state: bead i at psi_out[i - out_base]
   double* vel_out = nullptr;
+  // Where the arrays start in the chain: 0 for whole-chain arrays; a temporal block
+  // (temporal_block.h) passes a window of the chain held in cache.
+  int base = 0;
+  int out_base = 0;
   int beads = 0;
   double gamma = 0.0;
   double h = 0.0;

@@ -10,10 +10,15 @@ std::int64_t after_break_step(double break_tau, double after_break, double dt) {
 }
 
 RunEnd run_until(Integrator& sim, const StopRule& stop, const std::vector<Observer>& observers) {
-  auto observe = [&](bool start) {
+  // `from`: the step before the last advance (a coarse observer sees the run if a multiple
+  // of its `every` lies in (from, step]).
+  auto observe = [&](bool start, std::int64_t from) {
     const std::int64_t step = sim.state().step;
-    for (const Observer& o : observers)
-      if ((!start || o.at_start) && step % o.every == 0) o.see(sim);
+    for (const Observer& o : observers) {
+      if (start ? o.at_start && step % o.every == 0
+                : (o.coarse ? step / o.every > from / o.every : step % o.every == 0))
+        o.see(sim);
+    }
   };
   std::int64_t last = stop.last_step;
   // A run resumed after its first break (the viewer, advance_to) applies the rule at once.
@@ -27,11 +32,17 @@ RunEnd run_until(Integrator& sim, const StopRule& stop, const std::vector<Observ
     return stop.at_first_break;
   };
   if (on_break()) return RunEnd::Reached;
-  observe(true);
+  observe(true, 0);
   while (sim.state().step < last) {
     if (stop.cancel && stop.cancel->load(std::memory_order_relaxed)) return RunEnd::Cancelled;
-    if (!sim.step()) return RunEnd::Failed;
-    observe(false);
+    // The steps up to the next observation or stop are plain as far as this loop is
+    // concerned: the integrator may take them as one temporal block (never across a break).
+    const std::int64_t step = sim.state().step;
+    std::int64_t room = last - step;
+    for (const Observer& o : observers)
+      if (!o.coarse) room = std::min(room, o.every - step % o.every);
+    if (sim.step_up_to(room) == 0) return RunEnd::Failed;
+    observe(false, step);
     if (on_break()) return RunEnd::Reached;
   }
   return RunEnd::Reached;

@@ -23,7 +23,8 @@ struct StopRule {
   // Stop this long (in tau) after the first break, rounded up to the step grid.
   std::optional<double> after_break;
   bool at_first_break = false;  // stop at the end of the step in which the first break fell
-  // Polled before every step: a signal handler or a GUI sets it to cancel the run.
+  // Polled before every step, or every temporal block of steps (IntegratorOptions::
+  // block_steps): a signal handler or a GUI sets it to cancel the run.
   const std::atomic<bool>* cancel = nullptr;
 };
 
@@ -37,6 +38,10 @@ struct Observer {
   std::int64_t every = 1;
   bool at_start = false;
   std::function<void(const Integrator&)> see;
+  // A progress report: it may be called once after a temporal block of steps
+  // (IntegratorOptions::block_steps) that passed a multiple of `every`, instead of at that
+  // step, so it does not cut the run into single steps.
+  bool coarse = false;
 };
 
 enum class RunEnd {

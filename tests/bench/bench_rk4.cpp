@@ -60,9 +60,11 @@ cb::Forcing ramp_forcing() {
 // ---------------------------------------------------------------------------------------
 // cb::Integrator on a chain from rest, warmed up. Breakable uses a finite threshold no spring
 // can reach, so the result is the same but every step pays for the crossing checks. A path the
-// CPU lacks is skipped.
+// CPU lacks is skipped. block: steps per temporal block (IntegratorOptions::block_steps; 1 off,
+// -1 the Integrator's default). At N >= 1e6 an iteration is 16 steps (two blocks of the
+// default 8), blocked or not.
 void run_fused_rk4(benchmark::State& state, int beads, int threads, bool breakable,
-                   cb::SimdPath simd, bool tiled_only) {
+                   cb::SimdPath simd, bool tiled_only, int block) {
   cb::ChainParams p;
   p.beads = beads;
   p.gamma = kGamma;
@@ -73,10 +75,11 @@ void run_fused_rk4(benchmark::State& state, int beads, int threads, bool breakab
   }
   cb::IntegratorOptions options{kDt, threads, simd};
   options.tiled_only = tiled_only;
+  if (block >= 0) options.block_steps = block;
   cb::Integrator sim(p, ramp_forcing(), options);
   FusedSim fused{sim};
   warm_up(fused);
-  const int steps = steps_per_iteration(p.beads);
+  const int steps = p.beads >= 1'000'000 ? 16 : steps_per_iteration(p.beads);
   for (auto _ : state) {
     if (!sim.advance_to(sim.state().step + steps)) {
       state.SkipWithError(sim.error().c_str());
@@ -88,17 +91,19 @@ void run_fused_rk4(benchmark::State& state, int beads, int threads, bool breakab
   state.counters["subnormal"] = static_cast<double>(beads_subnormal(fused.psi(), fused.vel()));
 }
 
-// Args: {beads, threads, breakable, simd}; simd: 0 sse2, 1 avx2, 2 avx512 (cb::SimdPath).
+// Args: {beads, threads, breakable, simd, block}; simd: 0 sse2, 1 avx2, 2 avx512
+// (cb::SimdPath); block as in run_fused_rk4.
 void BM_FusedRK4(benchmark::State& state) {
   run_fused_rk4(state, static_cast<int>(state.range(0)), static_cast<int>(state.range(1)),
-                state.range(2) != 0, static_cast<cb::SimdPath>(state.range(3)), false);
+                state.range(2) != 0, static_cast<cb::SimdPath>(state.range(3)), false,
+                static_cast<int>(state.range(4)));
 }
 
 // Args: {beads, simd}. BM_FusedRK4 on one thread with the small-chain kernel turned off
 // (IntegratorOptions::tiled_only): the tiled kernel it replaces, measured in the same run.
 void BM_FusedTiledRK4(benchmark::State& state) {
   run_fused_rk4(state, static_cast<int>(state.range(0)), 1, false,
-                static_cast<cb::SimdPath>(state.range(1)), true);
+                static_cast<cb::SimdPath>(state.range(1)), true, -1);
 }
 
 // Args: {beads, simd}. The ensemble path of `sweep --solver rk4` (physics/lanes.h): eight
@@ -231,11 +236,15 @@ BENCHMARK(BM_FusedFromRest)->ArgNames({"N", "ftz"})->ArgsProduct({{1'000}, {0, 1
 BENCHMARK(BM_TriadThreads)->Args({10'000'000, 2})->Apply(common);
 // Every instruction set at every N on one thread; two threads only where the Integrator
 // uses them (N >= 20000 per extra worker).
+// At N >= 1e6, temporal blocking off (block 1) and on (8) side by side; SSE2 unblocked only.
 BENCHMARK(BM_FusedRK4)
-    ->ArgNames({"N", "threads", "breakable", "simd"})
-    ->ArgsProduct({{30, 1'000, 1'000'000, 10'000'000}, {1}, {0}, {0, 1, 2}})
-    ->ArgsProduct({{1'000'000, 10'000'000}, {2}, {0}, {0, 1, 2}})
-    ->Args({1'000'000, 1, 1, 2})
+    ->ArgNames({"N", "threads", "breakable", "simd", "block"})
+    ->ArgsProduct({{30, 1'000}, {1}, {0}, {0, 1, 2}, {-1}})
+    ->ArgsProduct({{1'000'000, 10'000'000}, {1, 2}, {0}, {0}, {1}})
+    ->ArgsProduct({{1'000'000, 10'000'000}, {1, 2}, {0}, {1, 2}, {1, 8}})
+    ->ArgsProduct({{10'000'000}, {1}, {0}, {1}, {2, 4, 16}})  // the block length's trade-off
+    ->Args({1'000'000, 1, 1, 2, 1})
+    ->Args({1'000'000, 1, 1, 2, 8})
     ->Apply(common);
 BENCHMARK(BM_FusedTiledRK4)
     ->ArgNames({"N", "simd"})

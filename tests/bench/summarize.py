@@ -22,7 +22,7 @@ def medians(bench_json):
             continue
         name = b["run_name"]
         fam = name.split("/")[0]
-        args = dict(re.findall(r"(\w+):(\d+)", name))
+        args = dict(re.findall(r"(\w+):(-?\d+)", name))
         if fam == "BM_Triad":
             out[("triad", int(name.split("/")[1]), 1)] = b["bytes_per_second"]
         elif fam == "BM_TriadThreads":
@@ -39,7 +39,11 @@ def medians(bench_json):
         elif fam == "BM_FusedRK4":
             key = ("fused", int(args["N"]), int(args["threads"]), int(args["breakable"]),
                    int(args["simd"]))
-            out[key] = b["bead_steps"]
+            block = int(args.get("block", -1))
+            if block > 1:  # temporal blocking: its own table; the others are one step at a time
+                out[("blocked",) + key[1:] + (block,)] = b["bead_steps"]
+            else:
+                out[key] = b["bead_steps"]
     return out
 
 
@@ -93,6 +97,21 @@ def main():
                   + " M bead-steps/s; fused / tiled "
                   + ", ".join(f"{ISAS[i]} {m[('fused', n, 1, 0, i)] / v:.2f}"
                               for i, v in tiled.items() if ('fused', n, 1, 0, i) in m))
+    blocked = sorted(k for k in m if k[0] == "blocked")
+    if blocked:
+        print()
+        print("| N | threads | simd | one step at a time | blocked (K steps) | blocked / one step "
+              "| one step / ceiling | blocked / ceiling |")
+        print("|---:|---:|---|---:|---:|---:|---:|---:|")
+    for k in blocked:
+        _, n, t, brk, i, block = k
+        on, off = m[k], m.get(("fused", n, t, brk, i))
+        ceil = ceiling.get(t)
+        cell = lambda v: f"{v / ceil:.2f}" if v and ceil else "-"
+        print(f"| {n:,} | {t}{' breakable' if brk else ''} | {ISAS[i]} | "
+              f"{off / M:.1f} | {on / M:.1f} (K={block}) | {on / off:.2f} | {cell(off)} | "
+              f"{cell(on)} |" if off else f"| {n:,} | {t} | {ISAS[i]} | - | {on / M:.1f} | - | - | "
+              f"{cell(on)} |")
     for n, v in sorted(numpy.items(), key=lambda kv: int(kv[0])):
         print(f"- numpy, N = {int(n):,}: {v['median'] / M:.2f} M bead-steps/s")
 
