@@ -99,10 +99,14 @@ struct Run {
   std::int64_t blocked_steps = 0;      // steps taken inside blocks (by counting step_up_to)
 };
 
-Run run(const Scene& sc, cb::SimdPath path, int block) {
-  cb::IntegratorOptions o{sc.dt, sc.threads, path, block};
+// tiled_only: the tiled kernel everywhere (else the window kernel in blocks on AVX2 and
+// AVX-512, and the one-chain kernel for small chains stepped one at a time).
+Run run(const Scene& sc, cb::SimdPath path, int block, bool tiled_only) {
+  cb::IntegratorOptions o{sc.dt, sc.threads, path, block, tiled_only};
   cb::Integrator sim(sc.chain, sc.forcing, o);
   REQUIRE(sim.block_steps() == std::max(1, block));
+  // Not vacuous: the window kernel is there where it should be.
+  REQUIRE(sim.block_window_kernel() == (!tiled_only && path != cb::SimdPath::Sse2));
   Run r;
   std::vector<cb::Observer> observers;
   if (sc.observe_every > 0)
@@ -146,11 +150,21 @@ TEST_CASE("temporal blocking gives the bytes of one step at a time on every SIMD
           continue;
         }
         INFO(cb::simd_name(path));
-        const Run off = run(sc, path, 1);
-        const Run on = run(sc, path, 8);
+        // Blocked with the window kernel (AVX2, AVX-512; the tiled kernel on SSE2) against
+        // unblocked on the tiled kernel; blocked on the tiled kernel below.
+        const Run off = run(sc, path, 1, true);
+        const Run on = run(sc, path, 8, false);
         if (!sc.at_first_break) {
           // Not vacuous: most steps went through blocks.
           CHECK(on.blocked_steps > sc.steps / 2);
+        }
+        {
+          const Run tiled = run(sc, path, 8, true);
+          CHECK(same_doubles(tiled.state.psi, on.state.psi));
+          CHECK(same_doubles(tiled.state.vel, on.state.vel));
+          CHECK(same_double(tiled.state.dissipated, on.state.dissipated));
+          CHECK(same_double(tiled.state.work, on.state.work));
+          CHECK(tiled.state.broken == on.state.broken);
         }
         CHECK(on.state.step == off.state.step);
         CHECK(on.observed == off.observed);
@@ -172,7 +186,7 @@ TEST_CASE("temporal blocking gives the bytes of one step at a time on every SIMD
         if (sc.threads > 1) {
           Scene one = sc;
           one.threads = 1;
-          const Run single = run(one, path, 8);
+          const Run single = run(one, path, 8, false);
           CHECK(same_doubles(single.state.psi, on.state.psi));
           CHECK(same_doubles(single.state.vel, on.state.vel));
           CHECK(same_double(single.state.dissipated, on.state.dissipated));
@@ -201,121 +215,146 @@ TEST_CASE("blocking is on by default only for long chains, and 0 or 1 turns it o
 // moves only near bead N for any run a test can afford, so most tiles' friction sums would be
 // zero and their order would not show): random psi and vel on 20000 beads split between two
 // workers, broken springs inside, at and across tile and block edges, friction, bead N.
+// The window kernel's calls, counted so that the test knows it ran (through `window_under_test`).
+cb::detail::Rk4Window window_under_test = nullptr;
+int window_calls = 0;
+void counting_window(const cb::detail::StepInput& in, int first, int last, int own_first,
+                     int own_last, cb::detail::StepOutput& out) {
+  ++window_calls;
+  window_under_test(in, first, last, own_first, own_last, out);
+}
+
 TEST_CASE("a block's states and per-step sums equal the one-step kernel's on a moving chain",
           "[blocking]") {
   constexpr int kBeads = 20000;
   const std::pair<int, int> ranges[2] = {{0, 10240}, {10240, kBeads}};
-  std::vector<int> broken = {17, 512, 513, 4096, 4097, 4101, 10240, 10241, 12000, kBeads};
-  std::vector<double> psi(kBeads), vel(kBeads);
-  std::uint64_t seed = 12345;
-  auto uniform = [&] {  // splitmix64 -> [-0.3, 0.3)
-    seed += 0x9E3779B97F4A7C15ull;
-    std::uint64_t z = seed;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return 0.6 * static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1.0p-53 - 0.3;
-  };
-  for (int i = 0; i < kBeads; ++i) {
-    psi[i] = uniform();
-    vel[i] = uniform();
-  }
-  for (int count : {2, 3, 8}) {
-    std::vector<cb::detail::PlainStep> steps(count);
-    for (int k = 0; k < count; ++k) {
-      steps[k].h = 0.05;
-      for (int i = 0; i < 3; ++i) steps[k].force[i] = 0.1 * k + 0.03 * i;
+  // Broken springs at tile, block and worker edges (most blocks then take the tiled kernel);
+  // one near bead N only; none (every block on the window kernel where there is one: the
+  // wall, bead N, the halo reaching the chain's ends, every tile's friction sums).
+  for (const std::vector<int>& broken :
+       {std::vector<int>{17, 512, 513, 4096, 4097, 4101, 10240, 10241, 12000, kBeads},
+        std::vector<int>{kBeads - 3}, std::vector<int>{}}) {
+    std::vector<double> psi(kBeads), vel(kBeads);
+    std::uint64_t seed = 12345;
+    auto uniform = [&] {  // splitmix64 -> [-0.3, 0.3)
+      seed += 0x9E3779B97F4A7C15ull;
+      std::uint64_t z = seed;
+      z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+      z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+      return 0.6 * static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1.0p-53 - 0.3;
+    };
+    for (int i = 0; i < kBeads; ++i) {
+      psi[i] = uniform();
+      vel[i] = uniform();
     }
-    for (cb::SimdPath path : {cb::SimdPath::Sse2, cb::SimdPath::Avx2, cb::SimdPath::Avx512}) {
-      if (!cb::simd_supported(path)) continue;
-      INFO(cb::simd_name(path) << ", " << count << " steps");
-      const cb::detail::Rk4Beads kernel = cb::detail::rk4_kernel(path);
-      cb::detail::StepInput in;
-      in.beads = kBeads;
-      in.gamma = 0.07;
-      in.broken = &broken;
-      // One step at a time, the reference: each worker's StepOutput per step.
-      std::vector<double> x = psi, v = vel, xn(kBeads), vn(kBeads);
-      std::vector<cb::detail::StepOutput> want(2 * count);
-      cb::detail::TileScratch scratch;
+    for (int count : {2, 3, 8}) {
+      std::vector<cb::detail::PlainStep> steps(count);
       for (int k = 0; k < count; ++k) {
-        in.psi = x.data();
-        in.vel = v.data();
-        in.psi_out = xn.data();
-        in.vel_out = vn.data();
-        in.h = steps[k].h;
-        std::copy(steps[k].force, steps[k].force + 3, in.force);
-        for (int w = 0; w < 2; ++w)
-          kernel(in, ranges[w].first, ranges[w].second, scratch, want[2 * k + w]);
-        x.swap(xn);
-        v.swap(vn);
+        steps[k].h = 0.05;
+        for (int i = 0; i < 3; ++i) steps[k].force[i] = 0.1 * k + 0.03 * i;
       }
-      // The same steps as blocks.
-      std::vector<double> bx(kBeads), bv(kBeads);
-      in.psi = psi.data();
-      in.vel = vel.data();
-      in.psi_out = bx.data();
-      in.vel_out = bv.data();
-      cb::detail::BlockScratch blocks[2];
-      std::atomic<bool> abort{false};
-      for (int w = 0; w < 2; ++w)
-        REQUIRE(cb::detail::rk4_blocked(kernel, in, steps, ranges[w].first, ranges[w].second,
-                                        scratch, blocks[w], abort) == -1);
-      CHECK(same_doubles(bx, x));
-      CHECK(same_doubles(bv, v));
-      for (int k = 0; k < count; ++k)
-        for (int w = 0; w < 2; ++w)
-          for (int s = 0; s < 4; ++s) {
-            INFO("step " << k << " worker " << w << " stage " << s);
-            CHECK(same_double(blocks[w].steps[k].dissipation_rate[s],
-                              want[2 * k + w].dissipation_rate[s]));
-            CHECK(same_double(blocks[w].steps[k].end_velocity[s], want[2 * k + w].end_velocity[s]));
-            CHECK(want[2 * k + w].dissipation_rate[s] > 0.0);
+      for (cb::SimdPath path : {cb::SimdPath::Sse2, cb::SimdPath::Avx2, cb::SimdPath::Avx512}) {
+        if (!cb::simd_supported(path)) continue;
+        for (bool use_window : {false, true}) {
+          // The reference below is always the tiled kernel, one step at a time.
+          window_under_test = cb::detail::rk4_window_kernel(path);
+          if (use_window && !window_under_test) continue;  // SSE2: tiled only
+          const cb::detail::Rk4Window window = use_window ? counting_window : nullptr;
+          window_calls = 0;
+          INFO(cb::simd_name(path) << ", " << count << " steps, " << broken.size()
+                                   << " broken, window kernel " << use_window);
+          const cb::detail::Rk4Beads kernel = cb::detail::rk4_kernel(path);
+          cb::detail::StepInput in;
+          in.beads = kBeads;
+          in.gamma = 0.07;
+          in.broken = &broken;
+          // One step at a time, the reference: each worker's StepOutput per step.
+          std::vector<double> x = psi, v = vel, xn(kBeads), vn(kBeads);
+          std::vector<cb::detail::StepOutput> want(2 * count);
+          cb::detail::TileScratch scratch;
+          for (int k = 0; k < count; ++k) {
+            in.psi = x.data();
+            in.vel = v.data();
+            in.psi_out = xn.data();
+            in.vel_out = vn.data();
+            in.h = steps[k].h;
+            std::copy(steps[k].force, steps[k].force + 3, in.force);
+            for (int w = 0; w < 2; ++w)
+              kernel(in, ranges[w].first, ranges[w].second, scratch, want[2 * k + w]);
+            x.swap(xn);
+            v.swap(vn);
           }
-      // A crossing: the same chain with a threshold its springs reach within the block. The
-      // block names a step in which the one-step path finds a crossing in worker 0's range
-      // (the Hermite test of Integrator::advance_interval on the kernel's candidates).
-      in.threshold = 0.62;
-      std::vector<bool> crossing(count, false);
-      x = psi;
-      v = vel;
-      for (int k = 0; k < count; ++k) {
-        in.psi = x.data();
-        in.vel = v.data();
-        in.psi_out = xn.data();
-        in.vel_out = vn.data();
-        in.h = steps[k].h;
-        std::copy(steps[k].force, steps[k].force + 3, in.force);
-        for (int w = 0; w < 2; ++w) {
-          cb::detail::StepOutput out;
-          kernel(in, ranges[w].first, ranges[w].second, scratch, out);
-          if (w == 0)
-            for (const auto& c : out.candidates)
-              crossing[k] =
-                  crossing[k] || cb::detail::hermite_first_crossing(c.p0, c.p1, c.m0, c.m1, in.h,
-                                                                    in.threshold, false) >= 0.0;
+          // The same steps as blocks.
+          std::vector<double> bx(kBeads), bv(kBeads);
+          in.psi = psi.data();
+          in.vel = vel.data();
+          in.psi_out = bx.data();
+          in.vel_out = bv.data();
+          cb::detail::BlockScratch blocks[2];
+          std::atomic<bool> abort{false};
+          for (int w = 0; w < 2; ++w)
+            REQUIRE(cb::detail::rk4_blocked(kernel, window, in, steps, ranges[w].first,
+                                            ranges[w].second, scratch, blocks[w], abort) == -1);
+          CHECK(same_doubles(bx, x));
+          CHECK(same_doubles(bv, v));
+          if (use_window) CHECK(window_calls >= (broken.empty() ? 5 * count : count));
+          for (int k = 0; k < count; ++k)
+            for (int w = 0; w < 2; ++w)
+              for (int s = 0; s < 4; ++s) {
+                INFO("step " << k << " worker " << w << " stage " << s);
+                CHECK(same_double(blocks[w].steps[k].dissipation_rate[s],
+                                  want[2 * k + w].dissipation_rate[s]));
+                CHECK(same_double(blocks[w].steps[k].end_velocity[s],
+                                  want[2 * k + w].end_velocity[s]));
+                CHECK(want[2 * k + w].dissipation_rate[s] > 0.0);
+              }
+          // A crossing: the same chain with a threshold its springs reach within the block. The
+          // block names a step in which the one-step path finds a crossing in worker 0's range
+          // (the Hermite test of Integrator::advance_interval on the kernel's candidates).
+          in.threshold = 0.62;
+          std::vector<bool> crossing(count, false);
+          x = psi;
+          v = vel;
+          for (int k = 0; k < count; ++k) {
+            in.psi = x.data();
+            in.vel = v.data();
+            in.psi_out = xn.data();
+            in.vel_out = vn.data();
+            in.h = steps[k].h;
+            std::copy(steps[k].force, steps[k].force + 3, in.force);
+            for (int w = 0; w < 2; ++w) {
+              cb::detail::StepOutput out;
+              kernel(in, ranges[w].first, ranges[w].second, scratch, out);
+              if (w == 0)
+                for (const auto& c : out.candidates)
+                  crossing[k] =
+                      crossing[k] || cb::detail::hermite_first_crossing(
+                                         c.p0, c.p1, c.m0, c.m1, in.h, in.threshold, false) >= 0.0;
+            }
+            x.swap(xn);
+            v.swap(vn);
+          }
+          in.psi = psi.data();
+          in.vel = vel.data();
+          in.psi_out = bx.data();
+          in.vel_out = bv.data();
+          abort = false;
+          const int failed = cb::detail::rk4_blocked(kernel, window, in, steps, ranges[0].first,
+                                                     ranges[0].second, scratch, blocks[0], abort);
+          REQUIRE(failed >= 0);
+          REQUIRE(failed < count);
+          CHECK(crossing[failed]);
+          CHECK(abort.load());
+          in.threshold = 0.0;
+          // A value that is not finite fails the block too.
+          std::vector<double> bad = psi;
+          bad[ranges[1].first + 700] = std::numeric_limits<double>::infinity();
+          in.psi = bad.data();
+          abort = false;
+          CHECK(cb::detail::rk4_blocked(kernel, window, in, steps, ranges[1].first,
+                                        ranges[1].second, scratch, blocks[1], abort) == 0);
         }
-        x.swap(xn);
-        v.swap(vn);
       }
-      in.psi = psi.data();
-      in.vel = vel.data();
-      in.psi_out = bx.data();
-      in.vel_out = bv.data();
-      abort = false;
-      const int failed = cb::detail::rk4_blocked(kernel, in, steps, ranges[0].first,
-                                                 ranges[0].second, scratch, blocks[0], abort);
-      REQUIRE(failed >= 0);
-      REQUIRE(failed < count);
-      CHECK(crossing[failed]);
-      CHECK(abort.load());
-      in.threshold = 0.0;
-      // A value that is not finite fails the block too.
-      std::vector<double> bad = psi;
-      bad[ranges[1].first + 700] = std::numeric_limits<double>::infinity();
-      in.psi = bad.data();
-      abort = false;
-      CHECK(cb::detail::rk4_blocked(kernel, in, steps, ranges[1].first, ranges[1].second, scratch,
-                                    blocks[1], abort) == 0);
     }
   }
 }

@@ -71,7 +71,8 @@ struct Integrator::Impl {
   double drive_f = 0.0;
   SimdPath simd;
   detail::Rk4Beads kernel;
-  detail::Rk4Chain chain_kernel = nullptr;  // null: always tiled
+  detail::Rk4Chain chain_kernel = nullptr;    // null: always tiled
+  detail::Rk4Window window_kernel = nullptr;  // a temporal block's steps; null: tiled
   // Temporal blocking: steps per block (1: off), each worker's buffers and answer, the
   // steps of the block being tried, and the first step a block may start at again after
   // one failed (its steps up to the failure go one at a time).
@@ -91,6 +92,7 @@ struct Integrator::Impl {
         block_steps(std::max(1, block)) {
     if (!tiled_only && pool.size() == 1 && beads <= kChainBeads)
       chain_kernel = detail::rk4_chain_kernel(path);
+    if (!tiled_only) window_kernel = detail::rk4_window_kernel(path);
     const int workers = pool.size();
     scratch.resize(workers);
     outputs.resize(workers);
@@ -142,6 +144,10 @@ std::optional<int> active_block_steps() {
 
 SimdPath Integrator::simd() const {
   return impl_->simd;
+}
+
+bool Integrator::block_window_kernel() const {
+  return impl_->window_kernel != nullptr;
 }
 
 bool Integrator::small_chain_kernel() const {
@@ -289,8 +295,8 @@ int Integrator::step_block(int count) {
   std::atomic<bool> abort{false};
   im.pool.run([&](int w) {
     im.block_result[w] =
-        detail::rk4_blocked(im.kernel, in, im.plain, im.ranges[w].first, im.ranges[w].second,
-                            im.scratch[w], im.blocks[w], abort);
+        detail::rk4_blocked(im.kernel, im.window_kernel, in, im.plain, im.ranges[w].first,
+                            im.ranges[w].second, im.scratch[w], im.blocks[w], abort);
   });
   int failed = count;
   for (int r : im.block_result)

@@ -34,7 +34,8 @@ struct IntegratorOptions {
   // Empty: kDefaultBlockSteps for chains of at least kBlockMinBeads beads, else off.
   std::optional<int> block_steps = std::nullopt;
   // Always take the tiled kernel, also where the one-chain kernel would run (a small chain on
-  // one thread, no spring broken). Same bits either way; tests compare the two paths.
+  // one thread, no spring broken) and in temporal blocks (the window kernel). Same bits
+  // either way; tests compare the two paths.
   bool tiled_only = false;
 };
 
@@ -76,6 +77,9 @@ class Integrator {
   // Whether steps take the one-chain kernel (rk4_chain.h) while no spring is broken: one
   // worker, N < 20000, AVX2 or AVX-512, not tiled_only. Same bits either way.
   bool small_chain_kernel() const;
+  // Whether temporal blocks take the window kernel (rk4_chain.h, rk4_window) where no broken
+  // spring is near: AVX2 or AVX-512, not tiled_only. Same bits either way.
+  bool block_window_kernel() const;
   SimdPath simd() const;     // the instruction set the kernel runs on
   int block_steps() const;   // steps per temporal block; 1 when blocking is off
   double force_now() const;  // f(tau) acting on bead N now (0 after the pull string broke)

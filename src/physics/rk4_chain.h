@@ -25,4 +25,23 @@ void rk4_chain(const StepInput& in, StepOutput& out);
 // The kernel for the path, or null where the tiled kernel is the faster one (SSE2).
 Rk4Chain rk4_chain_kernel(SimdPath path);
 
+// One step of beads [first, last) of a window of the chain (rk4_window_kernel.inc), for
+// temporal blocks: reads old values of beads [first - kHalo, last + kHalo) only (clipped to
+// the chain; in.base / in.out_base place the arrays), and keeps the books of the owned beads
+// [own_first, own_last) in `out` as rk4_beads's calls over those tiles would: own_first a
+// multiple of kTile, own_last one or in.beads, first <= own_first <= own_last <= last. No
+// broken spring may touch the beads read (window_is_intact, temporal_block.cpp).
+using Rk4Window = void (*)(const StepInput& in, int first, int last, int own_first, int own_last,
+                           StepOutput& out);
+namespace avx2 {
+void rk4_window(const StepInput& in, int first, int last, int own_first, int own_last,
+                StepOutput& out);
+}
+namespace avx512 {
+void rk4_window(const StepInput& in, int first, int last, int own_first, int own_last,
+                StepOutput& out);
+}
+// The kernel for the path, or null (SSE2: the tiled kernel, as for rk4_chain).
+Rk4Window rk4_window_kernel(SimdPath path);
+
 }  // namespace cb::detail

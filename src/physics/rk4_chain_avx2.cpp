@@ -1,4 +1,5 @@
-// The one-chain RK4 kernel (rk4_chain_kernel.inc) compiled for AVX2 (4 doubles a vector).
+// The one-chain RK4 kernel (rk4_chain_kernel.inc) and its window variant (rk4_window_kernel.inc)
+// compiled for AVX2 (4 doubles a vector).
 #include <immintrin.h>
 
 #include <algorithm>
@@ -20,6 +21,7 @@
 namespace cb::detail::avx2 {
 constexpr int kVec = 4;  // doubles a register
 #include "physics/rk4_chain_kernel.inc"
+#include "physics/rk4_window_kernel.inc"
 }  // namespace cb::detail::avx2
 
 #if defined(__clang__)

@@ -1,5 +1,5 @@
-// The one-chain RK4 kernel (rk4_chain_kernel.inc) compiled for AVX-512F with 512-bit vectors (8
-// doubles; GCC would otherwise prefer 256-bit ones).
+// The one-chain RK4 kernel (rk4_chain_kernel.inc) and its window variant (rk4_window_kernel.inc)
+// compiled for AVX-512F with 512-bit vectors (8 doubles; GCC would otherwise prefer 256-bit ones).
 #include <immintrin.h>
 
 #include <algorithm>
@@ -21,6 +21,7 @@
 namespace cb::detail::avx512 {
 constexpr int kVec = 8;  // doubles a register
 #include "physics/rk4_chain_kernel.inc"
+#include "physics/rk4_window_kernel.inc"
 }  // namespace cb::detail::avx512
 
 #if defined(__clang__)

@@ -19,11 +19,18 @@ bool tile_is_plain(const StepInput& in, const StepOutput& out) {
   return true;
 }
 
+// Whether no broken spring touches beads [lo, hi): spring j joins beads j - 2 and j - 1, and
+// the candidates of bead i are spring i + 1.
+bool window_is_intact(const std::vector<int>& broken, int lo, int hi) {
+  const auto it = std::lower_bound(broken.begin(), broken.end(), lo + 1);
+  return it == broken.end() || *it > hi + 1;
+}
+
 }  // namespace
 
-int rk4_blocked(Rk4Beads kernel, const StepInput& in, const std::vector<PlainStep>& steps,
-                int first, int last, TileScratch& scratch, BlockScratch& bs,
-                std::atomic<bool>& abort) {
+int rk4_blocked(Rk4Beads kernel, Rk4Window window, const StepInput& in,
+                const std::vector<PlainStep>& steps, int first, int last, TileScratch& scratch,
+                BlockScratch& bs, std::atomic<bool>& abort) {
   const int n = in.beads;
   const int count = static_cast<int>(steps.size());
   assert(count >= 2 && first % kTile == 0);
@@ -54,6 +61,23 @@ int rk4_blocked(Rk4Beads kernel, const StepInput& in, const std::vector<PlainSte
         s.vel_out = bs.vel[k % 2].data();
         s.out_base = lo0;
       }
+      StepOutput& sum = bs.steps[k];
+      // The wavefront kernel, where no broken spring is near: the halo and the block in one
+      // call, the block's books added straight into this step's sums (tile by tile, as
+      // below); the candidates are only looked at, as tile_is_plain does.
+      if (window &&
+          window_is_intact(*in.broken, std::max(0, lo - kHalo), std::min(n, hi + kHalo))) {
+        window(s, lo, hi, a, b, sum);
+        if (!tile_is_plain(s, sum)) {
+          abort.store(true, std::memory_order_relaxed);
+          return k;
+        }
+        sum.candidates.clear();
+        s.psi = s.psi_out;
+        s.vel = s.vel_out;
+        s.base = s.out_base;
+        continue;
+      }
       // The halo: values the neighbouring block computes (and checks) too.
       if (lo < a) {
         bs.halo.reset();
@@ -65,7 +89,6 @@ int rk4_blocked(Rk4Beads kernel, const StepInput& in, const std::vector<PlainSte
       }
       // The block's own tiles, one kernel call each: the same tiles, and the same sums in
       // the same order, as the one-step path's call over the worker's range.
-      StepOutput& sum = bs.steps[k];
       for (int t = a; t < b; t += kTile) {
         bs.tile.reset();
         kernel(s, t, std::min(b, t + kTile), scratch, bs.tile);

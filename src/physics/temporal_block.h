@@ -18,6 +18,7 @@
 #include <atomic>
 #include <vector>
 
+#include "physics/rk4_chain.h"
 #include "physics/rk4_tile.h"
 
 namespace cb::detail {
@@ -43,8 +44,10 @@ struct BlockScratch {
 // from in.psi / in.vel into in.psi_out / in.vel_out (in's h and force are ignored: each
 // step's are in `steps`). Returns -1, or the index of a step found not plain (then the
 // output is to be thrown away); a set `abort` stops between blocks, and a failure sets it.
-int rk4_blocked(Rk4Beads kernel, const StepInput& in, const std::vector<PlainStep>& steps,
-                int first, int last, TileScratch& scratch, BlockScratch& bs,
-                std::atomic<bool>& abort);
+// `window` (may be null) does each step of a block where no broken spring is near, with the
+// same bits as `kernel`'s tiles (rk4_window_kernel.inc); `kernel` does the others.
+int rk4_blocked(Rk4Beads kernel, Rk4Window window, const StepInput& in,
+                const std::vector<PlainStep>& steps, int first, int last, TileScratch& scratch,
+                BlockScratch& bs, std::atomic<bool>& abort);
 
 }  // namespace cb::detail
