@@ -93,7 +93,7 @@ TEST_CASE("without the picture module, picture commands fail clearly and the res
   const std::vector<std::string> commands{
       "snapshot " + scene("step_pulse.toml") + " --at 0 -o " + out.string(),
       "render " + scene("step_pulse.toml") + " --dry-run -o " + (out / "a.mp4").string(),
-      "figures --only fig3 -o " + out.string()};
+      "figures --only fig3a -o " + out.string()};
   for (const std::string& args : commands) {
     INFO("chainbreak " << args);
     const auto r = cb::test::run_shell(exe.string() + " " + args);
