@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "app/frames.h"
+#include "app/frame_options.h"
 #include "interrupt/interrupt.h"
 #include "scene/scene.h"
 
@@ -84,8 +84,8 @@ struct RenderOptions {
   int threads = 1;
   bool quiet = false;
   FrameOptions frame;
-  bool no_overlay = false;  // --no-overlay
-  std::string overlay;      // --overlay hud,plots,spacetime,modes; empty: the scene's [render]
+  bool no_overlay = false;   // --no-overlay
+  std::string overlay;       // --overlay hud,plots,spacetime,modes; empty: the scene's [render]
   double slowmo = -1;        // --slowmo F; < 0: the scene's [render] slowmo
   double slowmo_window = 0;  // --slowmo-window W; 0: the scene's
   double title_card = -1;    // --title-card S (seconds); < 0: the scene's

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "app/frame_options.h"
 #include "gl/gl_context.h"
 #include "physics/integrator.h"
 #include "render/renderer.h"
@@ -15,17 +16,6 @@
 #include "snapshot/snapshot.h"
 
 namespace cb {
-
-// Frame size and view as the user asked: scene [render], then -q preset, then --size/--view.
-struct FrameOptions {
-  std::string size;     // "WxH" or empty
-  std::string quality;  // l | m | h | k or empty
-  std::string view;     // longitudinal | transverse | both or empty
-  std::string theme;    // dark | light or empty
-  std::string zoom;     // app/zoom.h or empty
-  std::string caption;  // a line under the chain or empty
-  std::string gl;       // auto | osmesa | egl or empty (CHAINBREAK_GL)
-};
 
 // Applies the options to the scene's RenderDesc; throws SceneError for bad values.
 RenderDesc frame_settings(const SceneDesc& scene, const FrameOptions& options);

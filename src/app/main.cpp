@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "app/commands.h"
+#include "app/picture_module.h"
 #include "cluster/grid.h"
 #include "cluster/merge.h"
 #include "drive/drive.h"
@@ -141,8 +142,7 @@ int main(int argc, char** argv) {
 
   cb::SnapshotOptions snap;
   auto* snap_cmd = app.add_subcommand("snapshot", "PNG frames of a scene at exact times");
-  snap_cmd
-      ->add_option("scene", snap.scenes, "Scene file (scenes/*.toml); 2-4 scenes are stacked")
+  snap_cmd->add_option("scene", snap.scenes, "Scene file (scenes/*.toml); 2-4 scenes are stacked")
       ->required()
       ->expected(1, 4);
   snap_cmd->add_option("--at", snap.at, "Times tau, comma-separated, e.g. --at 0,30,60.5")
@@ -190,11 +190,13 @@ int main(int argc, char** argv) {
       ->excludes(no_overlay);
   render_cmd->add_option("--slowmo", render.slowmo,
                          "Slow motion around every break: F x the speed (0 < F < 1, e.g. 0.1)");
-  render_cmd->add_option("--title-card", render.title_card,
-                         "Open the video with S seconds of title, parameters and the question")
+  render_cmd
+      ->add_option("--title-card", render.title_card,
+                   "Open the video with S seconds of title, parameters and the question")
       ->check(CLI::Range(0.0, 60.0));
-  render_cmd->add_option("--slowmo-window", render.slowmo_window,
-                         "Slow motion within +-W tau of each break (default 2)")
+  render_cmd
+      ->add_option("--slowmo-window", render.slowmo_window,
+                   "Slow motion within +-W tau of each break (default 2)")
       ->check(CLI::PositiveNumber);
   add_frame_options(render_cmd, render.frame);
 
@@ -226,6 +228,10 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : 2;  // usage errors are user errors: status 2, like a bad scene
   }
 
+  // The picture commands' module, opened only if one runs. Declared outside the try: an
+  // exception a picture command throws is reported by the handlers below, and its type and
+  // text come from the module.
+  cb::PictureModule pictures;
   try {
     cb::active_simd();         // a bad CHAINBREAK_SIMD is a user error before any work
     cb::active_block_steps();  // and so is a bad CHAINBREAK_BLOCK_STEPS
@@ -237,14 +243,14 @@ int main(int argc, char** argv) {
     if (snap_cmd->parsed()) {
       snap.overrides = overrides;
       snap.scene = snap.scenes.front();
-      return cb::snapshot_command(snap);
+      return pictures.commands("snapshot").snapshot(snap);
     }
     if (render_cmd->parsed()) {
       render.overrides = overrides;
       render.scene = render.scenes.front();
-      return cb::render_command(render);
+      return pictures.commands("render").render(render);
     }
-    if (figures_cmd->parsed()) return cb::figures_command(figures);
+    if (figures_cmd->parsed()) return pictures.commands("figures").figures(figures);
 
     if (view_cmd->parsed()) {
       view.args = view_cmd->remaining();
@@ -277,6 +283,9 @@ int main(int argc, char** argv) {
     return user_error(e.what(), "chainbreak: ");
   } catch (const cb::GlOptionError& e) {
     return user_error(e.what(), "chainbreak: ");
+  } catch (const cb::PictureModuleError& e) {
+    std::fprintf(stderr, "chainbreak: %s\n", e.what());
+    return 1;
   } catch (const cb::GlError& e) {
     std::fprintf(stderr, "chainbreak: %s\n", e.what());
     return 1;

@@ -1,11 +1,18 @@
 # Install rules, the man page and the Debian package (issue #15).
-#   cmake --install build [--prefix P]   bin/chainbreak, bin/chainbreak-view, the Python module
+#   cmake --install build [--prefix P]   bin/chainbreak, bin/chainbreak-view, the picture
+#                                        commands' module (lib[/<multiarch>]/chainbreak/
+#                                        chainbreak-pictures.so, found by chainbreak relative
+#                                        to itself), the Python module
 #                                        (lib/python3/dist-packages), share/chainbreak/scenes,
 #                                        share/man/man1/chainbreak.1
 #   cd build && cpack -G DEB             chainbreak_<version>_<arch>.deb, prefix /usr
 include(GNUInstallDirs)
 
 install(TARGETS chainbreak RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT cli)
+# CHAINBREAK_PICTURES_INSTALL_DIR comes from src/app/CMakeLists.txt, which builds the path from
+# bin to it into the program.
+install(TARGETS chainbreak_pictures LIBRARY DESTINATION ${CHAINBREAK_PICTURES_INSTALL_DIR}
+        COMPONENT cli)
 if(TARGET chainbreak-view)
   install(TARGETS chainbreak-view RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT cli)
 endif()
@@ -25,8 +32,8 @@ add_custom_command(
 add_custom_target(chainbreak_manpage ALL DEPENDS ${CHAINBREAK_MANPAGE})
 install(FILES ${CHAINBREAK_MANPAGE} DESTINATION ${CMAKE_INSTALL_MANDIR}/man1 COMPONENT cli)
 
-# CPack: one .deb with everything above. Depends: the shared libraries the binaries link, found
-# by dpkg-shlibdeps (libavcodec59, libc6, ...), plus what is opened at run time and so
+# CPack: one .deb with everything above. Depends: the shared libraries the binaries and the
+# picture module link, found by dpkg-shlibdeps (libavcodec59, libc6, ...), plus what is opened at run time and so
 # invisible to it: Mesa's OSMesa and EGL (dlopen, src/gl), the DejaVu fonts, and numpy for the
 # Python module.
 set(CPACK_PACKAGE_NAME chainbreak)

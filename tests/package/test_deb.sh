@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The .deb of `cpack -G DEB` (cmake/install.cmake) installs and runs: extracted with dpkg -x
 # into a scratch root (no system install), its chainbreak prints the version and commit,
-# renders a short video from the packaged scenes, its Python module imports, its man page is
+# renders a short video from the packaged scenes (through the picture module it finds relative
+# to itself), `run` loads none of the render stack, its Python module imports, its man page is
 # there, and its Depends name the runtime libraries, not -dev packages.
 # Usage: test_deb.sh BUILD_DIR
 set -euo pipefail
@@ -16,7 +17,7 @@ trap 'rm -rf "$scratch"' EXIT
 deb=$(ls "$scratch"/pkg/chainbreak_*.deb)
 depends=$(dpkg-deb -f "$deb" Depends)
 echo "Depends: $depends"
-for lib in libavcodec libavformat libc6 libstdc++6 libosmesa6 fonts-dejavu-core; do
+for lib in libavcodec libavformat libcairo2 libc6 libstdc++6 libosmesa6 fonts-dejavu-core; do
   grep -q "$lib" <<< "$depends" || { echo "Depends lacks $lib" >&2; exit 1; }
 done
 if grep -q -- "-dev" <<< "$depends"; then echo "Depends names a -dev package" >&2; exit 1; fi
@@ -34,6 +35,13 @@ cd "$scratch"
   --set integrator.t_end=2 -q l --no-overlay --quiet -o "$scratch/pulse.mp4" > render.out
 test -s "$scratch/pulse.mp4"
 grep -q '"frames":' "$scratch/pulse.json"
+# The picture commands live in a module (src/app/picture_commands.h); run must not load it.
+LD_DEBUG=libs "$root/usr/bin/chainbreak" run "$root/usr/share/chainbreak/scenes/step_pulse.toml" \
+  --set integrator.t_end=1 --quiet > run.out 2> run.libs
+if grep -E 'calling init: .*(libavcodec|libcairo|libOSMesa|chainbreak-pictures)' run.libs; then
+  echo "chainbreak run loaded the render stack" >&2
+  exit 1
+fi
 
 PYTHONPATH="$root/usr/lib/python3/dist-packages" /usr/bin/python3 -c "
 import chainbreak, sys
