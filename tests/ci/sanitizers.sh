@@ -92,8 +92,8 @@ nice_build() {  # folder, targets...
 }
 
 # The tests whose code under test runs threads: sweep and --threads runs ([cli]), the RK4
-# tiles and worker pool ([rk4]), temporal blocks on two workers ([blocking]), the render pipeline ([render_cli], [video], [snapshot]) and
-# the viewer's recorder ([viewer]). Left out: two tests that time a Ctrl-C (the [cli] one
+# tiles and worker pool ([rk4]), temporal blocks on two workers ([blocking]), the render
+# pipeline ([render_cli], [video], [snapshot]) and the viewer's recorder ([viewer]). Left out: two tests that time a Ctrl-C (the [cli] one
 # signals the child after a fixed 0.5 s, before a TSan build, ~10x slower, has its handler
 # in place; the [render_cli] one wants the stop within 2 s).
 TSAN_TESTS="[cli]~SIGINT*,[rk4],[blocking],[render_cli]~*Ctrl-C*,[video],[snapshot],[viewer]"
