@@ -53,6 +53,23 @@ StepBooks step_books(int workers, Out out, const double force[3], double h) {
   return b;
 }
 
+// The kernel's input for the chain as it is now, into the next-state arrays: everything but
+// the step's h and forces (the one-step path and a temporal block fill those).
+detail::StepInput chain_input(ChainState& state, const ChainParams& params,
+                              std::vector<double>& psi_next, std::vector<double>& vel_next) {
+  detail::StepInput in;
+  in.psi = state.psi.data();
+  in.vel = state.vel.data();
+  in.psi_out = psi_next.data();
+  in.vel_out = vel_next.data();
+  in.beads = params.beads;
+  in.gamma = params.gamma;
+  in.broken = &state.broken;
+  in.threshold = params.breakable() ? params.threshold : 0.0;
+  in.stretch_only = params.break_on == BreakMode::Stretch;
+  return in;
+}
+
 }  // namespace
 
 struct Integrator::Impl {
@@ -282,16 +299,7 @@ bool Integrator::plain_step(std::int64_t step, double* h, double force[3]) const
 // only if no step of it breaks a spring or stops being finite.
 int Integrator::step_block(int count) {
   Impl& im = *impl_;
-  detail::StepInput in;
-  in.psi = state_.psi.data();
-  in.vel = state_.vel.data();
-  in.psi_out = im.psi_next.data();
-  in.vel_out = im.vel_next.data();
-  in.beads = params_.beads;
-  in.gamma = params_.gamma;
-  in.broken = &state_.broken;
-  in.threshold = params_.breakable() ? params_.threshold : 0.0;
-  in.stretch_only = params_.break_on == BreakMode::Stretch;
+  detail::StepInput in = chain_input(state_, params_, im.psi_next, im.vel_next);
   std::atomic<bool> abort{false};
   im.pool.run([&](int w) {
     im.block_result[w] =
@@ -343,22 +351,13 @@ double Integrator::drive_at(double tau) const {
 
 bool Integrator::rk4(double ta, double tb, bool end_is_breakpoint) {
   Impl& im = *impl_;
-  detail::StepInput in;
-  in.psi = state_.psi.data();
-  in.vel = state_.vel.data();
-  in.psi_out = im.psi_next.data();
-  in.vel_out = im.vel_next.data();
-  in.beads = params_.beads;
-  in.gamma = params_.gamma;
+  detail::StepInput in = chain_input(state_, params_, im.psi_next, im.vel_next);
   in.h = tb - ta;
   // At a jump the last stage must see the force from the left.
   const double t_end = end_is_breakpoint ? std::nextafter(tb, ta) : tb;
   in.force[0] = drive_at(ta);
   in.force[1] = drive_at(0.5 * (ta + tb));
   in.force[2] = drive_at(t_end);
-  in.broken = &state_.broken;
-  in.threshold = params_.breakable() ? params_.threshold : 0.0;
-  in.stretch_only = params_.break_on == BreakMode::Stretch;
   if (im.chain_kernel && state_.broken.empty()) {
     // A small chain, no spring broken: one call, no tiles (same bits).
     im.outputs[0].reset();
