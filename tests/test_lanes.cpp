@@ -90,7 +90,8 @@ std::vector<Value> chain_values() {
     out.push_back(v);
   }
   Value kicks = base;
-  kicks.chain.threshold = 0.8;
+  kicks.chain.threshold = 0.3;  // spring 30 at tau ~ 8.49, after the third kick (a value that
+                                // never broke would not show a kick left out)
   kicks.drive.type = cb::DriveType::Impulses;
   kicks.drive.times = {0.0, 3.005, 7.77};
   kicks.drive.strengths = {0.4, -0.3, 0.5};

@@ -1,8 +1,10 @@
 #include "physics/lanes.h"
 
 #include <algorithm>
+#include <bit>
 #include <cassert>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -26,7 +28,13 @@ struct Lane {
   std::vector<double> cuts;  // the current step's interval ends (empty: between steps)
   std::size_t cut = 0;       // the interval being integrated
   double from = 0.0;         // its start
+  bool plain = false;        // the step is one interval, with no kick and no breakpoint at its end
+  bool breakpoints_sorted = false;
+  std::size_t next_breakpoint = 0;  // the first breakpoint after the current step's start
   std::size_t next_kick = 0;
+  bool has_drive = false;       // the last drive value, as Integrator::drive_at caches it: the
+  std::uint64_t drive_tau = 0;  // end of one step is the start of the next
+  double drive_f = 0.0;
   double ta = 0.0, tb = 0.0;
   bool end_is_breakpoint = false;
   double p_max = 0.0, m_max = 0.0;  // max_j |phi_j|, |dphi_j/dtau| now (at rest: 0)
@@ -35,10 +43,9 @@ struct Lane {
 // The arrays of lanes_interval, (beads + 2) rows of kLanes doubles each.
 struct LaneArrays {
   int rows;
-  std::vector<double> x0, v0, sx, sv, xn, vn;
+  std::vector<double> x0, v0, xn, vn;
   explicit LaneArrays(int beads) : rows(beads + 2) {
-    for (auto* a : {&x0, &v0, &sx, &sv, &xn, &vn})
-      a->assign(static_cast<std::size_t>(rows) * kLanes, 0.0);
+    for (auto* a : {&x0, &v0, &xn, &vn}) a->assign(static_cast<std::size_t>(rows) * kLanes, 0.0);
   }
   // A lane starts from rest, Integrator's initial state.
   void clear_lane(int k) {
@@ -50,6 +57,41 @@ bool on_breakpoint(const Forcing& forcing, double t, double snap) {
   for (double b : forcing.breakpoints)
     if (std::abs(b - t) <= snap) return true;
   return false;
+}
+
+// Integrator::drive_at: f(tau), computed once for a tau asked twice in a row.
+double drive(Lane& lane, double tau) {
+  const std::uint64_t bits = std::bit_cast<std::uint64_t>(tau);
+  if (!lane.has_drive || bits != lane.drive_tau) {
+    lane.drive_f = lane.job.forcing(tau);
+    lane.drive_tau = bits;
+    lane.has_drive = true;
+  }
+  return lane.drive_f;
+}
+
+// Integrator::step's common step: no breakpoint in (t0 + snap, t1 + 2 snap] and no kick left
+// before t1 - snap, so the step is the one interval [t0, t1], no kick is due at its start and
+// its end is no breakpoint. What begin_step, apply_kicks and on_breakpoint would find, without
+// their searches (they cost a lane as much as its share of the kernel at N = 30).
+bool begin_plain_step(Lane& lane) {
+  if (!lane.breakpoints_sorted) return false;
+  const double dt = lane.job.dt;
+  const double t0 = static_cast<double>(lane.step) * dt;
+  const double t1 = static_cast<double>(lane.step + 1) * dt;
+  const double snap = 1e-9 * dt;
+  const auto& bps = lane.job.forcing.breakpoints;
+  while (lane.next_breakpoint < bps.size() && bps[lane.next_breakpoint] <= t0 + snap)
+    ++lane.next_breakpoint;
+  const auto& kicks = lane.job.forcing.kicks;
+  if (lane.next_breakpoint < bps.size() && bps[lane.next_breakpoint] <= t1 + 2.0 * snap)
+    return false;
+  if (lane.next_kick < kicks.size() && kicks[lane.next_kick].tau < t1 - snap) return false;
+  lane.cuts.assign(1, t1);
+  lane.cut = 0;
+  lane.from = t0;
+  lane.plain = true;
+  return true;
 }
 
 // Integrator::step's split of [t0, t1] at the drive's jumps, kinks and kicks strictly inside.
@@ -67,6 +109,7 @@ void begin_step(Lane& lane) {
   lane.cuts.push_back(t1);
   lane.cut = 0;
   lane.from = t0;
+  lane.plain = false;
 }
 
 // Integrator::apply_kicks: bead N's velocity jumps by each kick up to `up_to` (and the
@@ -83,7 +126,8 @@ void apply_kicks(Lane& lane, double up_to, double& v_end) {
 // Integrator::advance_interval's search for the earliest crossing in (ta, tb] of a lane whose
 // interval was integrated: springs by their Hermite cubic (the fused kernel's bound first), then
 // the pull string. Returns the spring (0: the string) and sets `first`, or -1.
-int first_crossing(const Lane& lane, const LaneArrays& a, int k, bool near, double& first) {
+int first_crossing(const Lane& lane, const LaneArrays& a, int k, bool near, double f_end,
+                   double& first) {
   const ChainParams& p = lane.job.params;
   const int n = p.beads;
   const double ta = lane.ta, tb = lane.tb;
@@ -109,7 +153,6 @@ int first_crossing(const Lane& lane, const LaneArrays& a, int k, bool near, doub
   }
   if (lane.pull) {
     const Forcing& f = lane.job.forcing;
-    const double f_end = f(lane.end_is_breakpoint ? std::nextafter(tb, ta) : tb);
     const double t = detail::first_time_at_least(
         f.f ? f.f : [](double) { return 0.0; }, f_end, ta, tb, p.threshold);
     if (t >= 0.0 && t <= first) {
@@ -157,6 +200,8 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
       const ChainParams& p = lane.job.params;
       lane.checks = p.breakable() && p.threshold > 0.0;
       lane.pull = p.pull_string && p.breakable();
+      lane.breakpoints_sorted =
+          std::is_sorted(lane.job.forcing.breakpoints.begin(), lane.job.forcing.breakpoints.end());
       return;
     }
   };
@@ -178,28 +223,27 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
         threshold[k] = kInf;
         continue;
       }
-      if (lane.cuts.empty()) begin_step(lane);
+      if (lane.cuts.empty() && !begin_plain_step(lane)) begin_step(lane);
       const double snap = 1e-9 * lane.job.dt;
-      apply_kicks(lane, lane.from + snap, a.v0[end_row + k]);
-      const Forcing& f = lane.job.forcing;
+      if (!lane.plain) apply_kicks(lane, lane.from + snap, a.v0[end_row + k]);
       lane.ta = lane.from;
       lane.tb = lane.cuts[lane.cut];
-      lane.end_is_breakpoint = on_breakpoint(f, lane.tb, snap);
+      lane.end_is_breakpoint = !lane.plain && on_breakpoint(lane.job.forcing, lane.tb, snap);
       const double ta = lane.ta, tb = lane.tb;
       h[k] = tb - ta;
       h2[k] = 0.5 * h[k];
       h6[k] = h[k] / 6.0;
       g2[k] = 2.0 * lane.job.params.gamma;
-      f0[k] = f(ta);
-      f1[k] = f(0.5 * (ta + tb));
-      f2[k] = f(lane.end_is_breakpoint ? std::nextafter(tb, ta) : tb);
+      f0[k] = drive(lane, ta);
+      f1[k] = drive(lane, 0.5 * (ta + tb));
+      f2[k] = drive(lane, lane.end_is_breakpoint ? std::nextafter(tb, ta) : tb);
       slack[k] = (4.0 / 27.0) * h[k];
       threshold[k] = lane.checks ? lane.job.params.threshold : kInf;
       p0[k] = lane.p_max;
       m0[k] = lane.m_max;
     }
     in.x0 = a.x0.data(), in.v0 = a.v0.data();
-    in.sx = a.sx.data(), in.sv = a.sv.data(), in.xn = a.xn.data(), in.vn = a.vn.data();
+    in.xn = a.xn.data(), in.vn = a.vn.data();
     kernel(in);
 
     // Every lane's new state becomes the current one; a lane that ended is cleared after.
@@ -213,7 +257,7 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
         continue;
       }
       double first = 0.0;
-      const int spring = first_crossing(lane, a, k, near[k] != 0, first);
+      const int spring = first_crossing(lane, a, k, near[k] != 0, f2[k], first);
       if (spring >= 0) {
         done(lane.job.id, LaneEnd{LaneEnd::Kind::Broke, {spring, first, lane.step + 1}});
         ended[k] = true;

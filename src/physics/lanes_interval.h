@@ -14,7 +14,6 @@ struct LaneInterval {
   int beads = 0;
   const double* x0 = nullptr;  // the state at the interval's start
   const double* v0 = nullptr;
-  double *sx = nullptr, *sv = nullptr;  // K1 + 2 K2 + 2 K3
   double *xn = nullptr, *vn = nullptr;  // the new state
   // Per lane: 2 gamma, the interval's length h, h/2, h/6, the force at its start, middle and
   // end, the Hermite slack (4/27) h, the threshold (+inf: no checks), and the largest |phi_j|
