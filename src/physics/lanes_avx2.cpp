@@ -4,21 +4,11 @@
 #include <limits>
 
 #include "physics/lanes_interval.h"
-
-#if defined(__clang__)
-#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
-#else
-#pragma GCC push_options
-#pragma GCC target("avx2")
-#endif
+#include "physics/target_avx2_begin.inc"
 
 namespace cb::detail::avx2 {
 constexpr int kVec = 4;  // doubles a register
 #include "physics/lanes_kernel.inc"
 }  // namespace cb::detail::avx2
 
-#if defined(__clang__)
-#pragma clang attribute pop
-#else
-#pragma GCC pop_options
-#endif
+#include "physics/target_end.inc"

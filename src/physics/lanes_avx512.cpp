@@ -5,21 +5,11 @@
 #include <limits>
 
 #include "physics/lanes_interval.h"
-
-#if defined(__clang__)
-#pragma clang attribute push(__attribute__((target("avx512f"))), apply_to = function)
-#else
-#pragma GCC push_options
-#pragma GCC target("avx512f", "prefer-vector-width=512")
-#endif
+#include "physics/target_avx512_begin.inc"
 
 namespace cb::detail::avx512 {
 constexpr int kVec = 8;  // doubles a register
 #include "physics/lanes_kernel.inc"
 }  // namespace cb::detail::avx512
 
-#if defined(__clang__)
-#pragma clang attribute pop
-#else
-#pragma GCC pop_options
-#endif
+#include "physics/target_end.inc"

@@ -5,20 +5,10 @@
 #include <vector>
 
 #include "physics/rk4_tile.h"
-
-#if defined(__clang__)
-#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
-#else
-#pragma GCC push_options
-#pragma GCC target("avx2")
-#endif
+#include "physics/target_avx2_begin.inc"
 
 namespace cb::detail::avx2 {
 #include "physics/rk4_tile_kernel.inc"
 }  // namespace cb::detail::avx2
 
-#if defined(__clang__)
-#pragma clang attribute pop
-#else
-#pragma GCC pop_options
-#endif
+#include "physics/target_end.inc"
