@@ -1,6 +1,7 @@
 // The RK4 integrator against the independent reference values of shared/reference
 // (exact modal expansion in 160-digit arithmetic, copied into tests/data), and its own
 // invariants: fourth-order convergence, the energy books, thread independence.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
@@ -129,6 +130,38 @@ TEST_CASE("The energy books close: E = W - D - B", "[rk4][energy]") {
   // included, so the books close to roughly 1e-8 relative here; 1e-7 leaves a margin.
   CHECK(cb::energy_balance_error(sim.state()) < 1e-7);
   CHECK(sim.state().dissipated > 0.0);
+}
+
+TEST_CASE("energy() in one pass has the bits of Eq. (energy)'s two sums written out",
+          "[rk4][energy]") {
+  // A state with springs broken at both ends and inside (1, 2, 7, N): the one-pass loop of
+  // energy.cpp skips exactly these in the potential and keeps each sum's order of additions,
+  // so the run summary's numbers stay those of the former two loops, bit for bit.
+  const int n = 40;
+  cb::ChainState s;
+  for (int i = 0; i < n; ++i) {
+    s.psi.push_back(std::sin(0.7 * i + 0.3) * (1.0 + 0.01 * i));
+    s.vel.push_back(std::cos(1.3 * i) / 3.0);
+  }
+  s.broken = {1, 2, 7, n};
+  s.work = 9.5;
+  s.dissipated = 0.25;
+  s.break_loss = 1.5;
+  double kinetic = 0.0, potential = 0.0;
+  for (int i = 0; i < n; ++i) kinetic += 0.5 * s.vel[i] * s.vel[i];
+  for (int j = 1; j <= n; ++j)
+    if (cb::spring_intact(s, j)) potential += 0.5 * cb::extension(s, j) * cb::extension(s, j);
+  const cb::EnergyParts e = cb::energy(s);
+  CHECK(e.kinetic == kinetic);  // exact: the same additions in the same order
+  CHECK(e.potential == potential);
+  const cb::EnergyBooks b = cb::energy_books(s);
+  CHECK(b.parts.kinetic == kinetic);
+  CHECK(b.parts.potential == potential);
+  CHECK(b.work == s.work);
+  CHECK(b.break_loss == s.break_loss);
+  CHECK(b.balance_error == cb::energy_balance_error(s));
+  const double total = kinetic + potential;
+  CHECK(b.balance_error == std::abs(total - (9.5 - 0.25 - 1.5)) / std::max(std::abs(total), 9.5));
 }
 
 TEST_CASE("Results do not depend on the number of threads", "[rk4][determinism]") {

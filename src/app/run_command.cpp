@@ -79,15 +79,15 @@ int finish(const RunOptions& o, const SceneDesc& scene, const RunOutcome& r) {
   if (r.simd) j += ",\"simd\":" + json_string(simd_name(*r.simd));
   j += ",\"breaks\":" + breaks_json(r.breaks, scene.units);
   j += ",\"steps\":" + std::to_string(r.steps) + ",\"tau_end\":" + number_text(r.tau_end);
-  if (r.final_state) {
-    const ChainState& s = *r.final_state;
-    const EnergyParts e = energy(s);
+  if (r.books) {
+    const EnergyBooks& b = *r.books;
+    const EnergyParts& e = b.parts;
     const int n = scene.chain.beads;
-    j += ",\"energy_balance_error\":" + number_text(energy_balance_error(s));
+    j += ",\"energy_balance_error\":" + number_text(b.balance_error);
     j += ",\"energy\":{\"per_particle\":" + number_text(per_particle(e.total(), n)) +
          ",\"kinetic\":" + number_text(e.kinetic) + ",\"potential\":" + number_text(e.potential) +
-         ",\"work\":" + number_text(s.work) + ",\"dissipated\":" + number_text(s.dissipated) +
-         ",\"break_loss\":" + number_text(s.break_loss) + "}";
+         ",\"work\":" + number_text(b.work) + ",\"dissipated\":" + number_text(b.dissipated) +
+         ",\"break_loss\":" + number_text(b.break_loss) + "}";
   } else {
     j += ",\"energy_balance_error\":null";
   }

@@ -16,6 +16,7 @@
 
 #include "exact/first_break.h"
 #include "physics/chain.h"
+#include "physics/energy.h"
 #include "physics/simd.h"
 #include "scene/scene.h"
 
@@ -54,7 +55,9 @@ struct RunOutcome {
   std::int64_t max_steps = 0;
   double tau_end = 0.0;
   std::vector<BreakEvent> breaks;
-  std::optional<ChainState> final_state;  // rk4 only: for the energy books
+  // rk4 only: the final state's energy books (not the state: at N = 1e7 a copy of it cost as
+  // much as 100 steps).
+  std::optional<EnergyBooks> books;
   std::optional<FirstBreak> exact_break;  // exact solver with a threshold (not expr)
   std::optional<SimdPath> simd;           // rk4 only: the kernel's instruction set
 };

@@ -19,6 +19,16 @@ inline double per_particle(double total, int beads) {
   return total / (n * n * n);
 }
 
+// The energy books of a state: its energy, the drive's work W, the friction's D and the
+// broken springs' B, and how well they close. One pass over the chain: a run's summary at
+// N = 1e7 used to take two (energy() and energy_balance_error()) on a copy of the state.
+struct EnergyBooks {
+  EnergyParts parts;
+  double work = 0.0, dissipated = 0.0, break_loss = 0.0;
+  double balance_error = 0.0;  // as energy_balance_error()
+};
+EnergyBooks energy_books(const ChainState& state);
+
 // |E - (W - D - B)| relative to the largest of the terms: how well the books close.
 double energy_balance_error(const ChainState& state);
 

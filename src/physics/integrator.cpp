@@ -18,6 +18,7 @@
 #include "physics/run_loop.h"
 #include "physics/temporal_block.h"
 #include "physics/worker_pool.h"
+#include "physics/zero_array.h"
 
 namespace cb {
 
@@ -101,8 +102,8 @@ struct Integrator::Impl {
   int failed_blocks = 0;  // blocks in a row that failed
 
   Impl(int beads, int threads, SimdPath path, bool tiled_only, int block)
-      : psi_next(beads),
-        vel_next(beads),
+      : psi_next(detail::zero_array(beads)),
+        vel_next(detail::zero_array(beads)),
         pool(std::clamp(threads, 1, 1 + beads / kBeadsPerThread)),
         simd(path),
         kernel(detail::rk4_kernel(path)),
@@ -129,8 +130,8 @@ Integrator::Integrator(const ChainParams& params, Forcing forcing, IntegratorOpt
     : params_(params), forcing_(std::move(forcing)), options_(options) {
   assert(params_.beads >= 1 && options_.dt > 0.0);
   assert(!options_.block_steps || *options_.block_steps <= kMaxBlockSteps);
-  state_.psi.assign(params_.beads, 0.0);
-  state_.vel.assign(params_.beads, 0.0);
+  state_.psi = detail::zero_array(params_.beads);
+  state_.vel = detail::zero_array(params_.beads);
   const int block = options_.block_steps.value_or(
       active_block_steps().value_or(params_.beads >= kBlockMinBeads ? kDefaultBlockSteps : 1));
   impl_ = std::make_unique<Impl>(params_.beads, options_.threads,

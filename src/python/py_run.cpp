@@ -145,7 +145,7 @@ Result run(const Scene& source, const std::string& solver, int every, bool psi, 
   for (const BreakEvent& b : outcome.breaks) r.breaks.emplace_back(b.spring, b.tau);
   if (outcome.exact_break && outcome.exact_break->broke)
     r.exact_first_break = std::make_pair(outcome.exact_break->spring, outcome.exact_break->tau);
-  if (outcome.final_state) r.energy_balance_error = energy_balance_error(*outcome.final_state);
+  if (outcome.books) r.energy_balance_error = outcome.books->balance_error;
   return r;
 }
 
