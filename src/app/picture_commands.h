@@ -8,9 +8,10 @@
 // invoked many times, a Slurm array once per task). So the program links the commands that
 // need no pictures, and this module holds the rest. Options are parsed by the program (so
 // `--help` lists every command) and handed over as the structs of app/commands.h; errors are
-// exceptions that the program's main() reports, as it always did. The program exports its
-// cb:: symbols (src/app/exports.list), so the module shares its globals (the interrupt flag)
-// instead of using copies.
+// exceptions that the program's main() reports, as it always did. The layers both need (the
+// commands without pictures and all below them) are one shared library, libchainbreak-core.so
+// (src/cmake/core_library.cmake), which the program loads and the module links: one copy of
+// their code and of their globals (the interrupt flag), with no symbols exported by hand.
 #pragma once
 
 #include "app/commands.h"
