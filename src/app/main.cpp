@@ -5,6 +5,7 @@
 
 #include "app/commands.h"
 #include "app/picture_module.h"
+#include "app/sweep_setup.h"  // chainbreak_exe()
 #include "cluster/grid.h"
 #include "cluster/merge.h"
 #include "drive/drive.h"
@@ -14,6 +15,11 @@
 #include "physics/simd.h"
 #include "resources/resources.h"
 #include "version.h"
+
+#ifndef CHAINBREAK_PICTURES_RELDIR
+#error \
+    "CHAINBREAK_PICTURES_RELDIR (the module's install folder relative to the program's) is set by src/app/CMakeLists.txt"
+#endif
 
 namespace {
 
@@ -230,8 +236,10 @@ int main(int argc, char** argv) {
 
   // The picture commands' module, opened only if one runs. Declared outside the try: an
   // exception a picture command throws is reported by the handlers below, and its type and
-  // text come from the module.
-  cb::PictureModule pictures;
+  // text come from the module. Looked for beside the program (the build tree), then in
+  // bin/../lib/chainbreak (installed).
+  const std::filesystem::path folder = std::filesystem::path(cb::chainbreak_exe()).parent_path();
+  cb::PictureModule pictures({folder, folder / CHAINBREAK_PICTURES_RELDIR});
   try {
     cb::active_simd();         // a bad CHAINBREAK_SIMD is a user error before any work
     cb::active_block_steps();  // and so is a bad CHAINBREAK_BLOCK_STEPS

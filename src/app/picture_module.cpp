@@ -2,35 +2,24 @@
 
 #include <dlfcn.h>
 
-#include "app/sweep_setup.h"  // chainbreak_exe()
-#include "version.h"          // CHAINBREAK_VERSION, CHAINBREAK_COMMIT (src/cmake/version.cmake)
-
-#ifndef CHAINBREAK_PICTURES_RELDIR
-#error \
-    "CHAINBREAK_PICTURES_RELDIR (the module's install folder relative to the program's) is set by src/app/CMakeLists.txt"
-#endif
+#include "version.h"  // CHAINBREAK_VERSION, CHAINBREAK_COMMIT (src/cmake/version.cmake)
 
 namespace cb {
 
 namespace fs = std::filesystem;
 
-std::vector<fs::path> picture_module_paths(const fs::path& program_folder) {
-  return {program_folder / kPictureModuleFile,
-          (program_folder / CHAINBREAK_PICTURES_RELDIR / kPictureModuleFile).lexically_normal()};
-}
-
 void PictureModule::Close::operator()(void* handle) const {
   ::dlclose(handle);
 }
 
-PictureModule::PictureModule() = default;
+PictureModule::PictureModule(std::vector<fs::path> folders) : folders_(std::move(folders)) {}
 PictureModule::~PictureModule() = default;
 
 const PictureCommands& PictureModule::commands(const std::string& command) {
   if (commands_) return *commands_;
-  const auto paths = picture_module_paths(fs::path(chainbreak_exe()).parent_path());
   std::string looked;
-  for (const auto& path : paths) {
+  for (const auto& folder : folders_) {
+    const fs::path path = (folder / kPictureModuleFile).lexically_normal();
     std::error_code error;
     if (!fs::exists(path, error)) {
       looked += (looked.empty() ? "" : " and ") + path.string();

@@ -1,5 +1,6 @@
-// The chainbreak program's handle on the picture module (app/picture_commands.h): found next to
-// the program, opened with dlopen when a picture command runs, never by run, sweep or merge.
+// The handle of the chainbreak program and of the Python module on the picture module
+// (app/picture_commands.h): found relative to them, opened with dlopen when a picture command
+// runs, never by run, sweep or merge. Part of the shared core, so both use this one loader.
 #pragma once
 
 #include <filesystem>
@@ -19,18 +20,15 @@ struct PictureModuleError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Where the module may be, in the order tried, for a program in `program_folder`: beside it
-// (the build tree), then the installed layout's library folder relative to it
-// (bin/../lib/chainbreak, src/cmake/install.cmake), so a package extracted anywhere finds it.
-std::vector<std::filesystem::path> picture_module_paths(
-    const std::filesystem::path& program_folder);
-
 // Owns the module's dlopen handle; opens it on first use and closes it when destroyed. Keep it
 // alive past the handling of any exception a command throws (main() declares it outside its
 // try block): the exception was made by code in the module.
 class PictureModule {
  public:
-  PictureModule();
+  // `folders`: where the module may be, in the order tried, each relative to the code that
+  // opens it (the build tree's place, then the installed one: bin/../lib/chainbreak,
+  // src/cmake/install.cmake), so a package extracted anywhere finds it.
+  explicit PictureModule(std::vector<std::filesystem::path> folders);
   ~PictureModule();
   PictureModule(const PictureModule&) = delete;
   PictureModule& operator=(const PictureModule&) = delete;
@@ -43,6 +41,7 @@ class PictureModule {
   struct Close {
     void operator()(void* handle) const;
   };
+  std::vector<std::filesystem::path> folders_;
   std::unique_ptr<void, Close> handle_;
   const PictureCommands* commands_ = nullptr;
 };

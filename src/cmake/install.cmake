@@ -1,20 +1,22 @@
 # Install rules, the man page and the Debian package (issue #15).
-#   cmake --install build [--prefix P]   bin/chainbreak, bin/chainbreak-view, the picture
-#                                        commands' module (lib[/<multiarch>]/chainbreak/
-#                                        chainbreak-pictures.so, found by chainbreak relative
-#                                        to itself), the Python module
+#   cmake --install build [--prefix P]   bin/chainbreak, bin/chainbreak-view, the shared core
+#                                        and the picture commands' module (lib[/<multiarch>]/
+#                                        chainbreak/libchainbreak-core.so and
+#                                        chainbreak-pictures.so, found by the programs relative
+#                                        to themselves), the Python module
 #                                        (lib/python3/dist-packages), share/chainbreak/scenes,
 #                                        share/man/man1/chainbreak.1
 #   cd build && cpack -G DEB             chainbreak_<version>_<arch>.deb, prefix /usr
 include(GNUInstallDirs)
 
 install(TARGETS chainbreak RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT cli)
-# CHAINBREAK_PICTURES_INSTALL_DIR comes from src/app/CMakeLists.txt, which builds the path from
-# bin to it into the program.
-install(TARGETS chainbreak_pictures LIBRARY DESTINATION ${CHAINBREAK_PICTURES_INSTALL_DIR}
+# CHAINBREAK_LIB_INSTALL_DIR comes from src/cmake/core_library.cmake (which installs the core
+# there); src/app/CMakeLists.txt builds the path from bin to it into the program.
+install(TARGETS chainbreak_pictures LIBRARY DESTINATION ${CHAINBREAK_LIB_INSTALL_DIR}
         COMPONENT cli)
 if(TARGET chainbreak-view)
   install(TARGETS chainbreak-view RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT cli)
+  cb_install_rpath(chainbreak-view ${CMAKE_INSTALL_BINDIR})
 endif()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/scenes/ DESTINATION ${CMAKE_INSTALL_DATADIR}/chainbreak/scenes
         COMPONENT cli)

@@ -1,18 +1,44 @@
 // chainbreak.snapshot and chainbreak.render: the pictures of `chainbreak snapshot` as numpy
 // arrays (app/snapshot_images.h) and `chainbreak render` itself (a video with progress).
+// Both run in the picture module chainbreak-pictures.so (app/picture_commands.h), opened on
+// the first call, so `import chainbreak` and its run, exact and sweep load no render stack.
+#include <dlfcn.h>
 #include <pybind11/stl.h>
 
 #include <atomic>
+#include <filesystem>
 #include <map>
 
 #include "app/commands.h"
+#include "app/picture_module.h"
 #include "app/snapshot_images.h"
 #include "interruptible.h"
 #include "py_common.h"
 
+#if !defined(CHAINBREAK_PYTHON_PICTURES_BUILD_RELDIR) || !defined(CHAINBREAK_PYTHON_PICTURES_RELDIR)
+#error "the picture module's folders relative to this module's are set by src/python/CMakeLists.txt"
+#endif
+
 namespace cb::py_detail {
 
 namespace {
+
+namespace fs = std::filesystem;
+
+// The picture module's table; `command` names the function about to run, for the error
+// message. Looked for relative to this module's file: in the build tree (build/python/..),
+// then installed (lib/python3/dist-packages -> lib/chainbreak). Loaded once, with the GIL held.
+const PictureCommands& pictures(const std::string& command) {
+  static PictureModule module([] {
+    static const int anchor = 0;  // an address inside this module, for dladdr
+    Dl_info info{};
+    if (!::dladdr(&anchor, &info) || !info.dli_fname) return std::vector<fs::path>{};
+    const fs::path folder = fs::absolute(info.dli_fname).parent_path();
+    return std::vector<fs::path>{folder / CHAINBREAK_PYTHON_PICTURES_BUILD_RELDIR,
+                                 folder / CHAINBREAK_PYTHON_PICTURES_RELDIR};
+  }());
+  return module.commands(command);
+}
 
 FrameOptions frame_options(const std::optional<std::pair<int, int>>& size,
                            const std::optional<std::string>& quality,
@@ -70,9 +96,10 @@ py::object snapshot(const Scene& source, const py::object& tau,
   request.theme = theme.value_or("");
   request.stop = &g_interrupted;
   std::map<double, Image> images;
+  const PictureCommands& module = pictures("chainbreak.snapshot");
   const std::pair<int, std::string> status = interruptible([&] {
     std::string error;
-    const int s = snapshot_images(
+    const int s = module.snapshot_images(
         scene, request, [&](double t, Image&& image) { images[t] = std::move(image); }, error);
     return std::make_pair(s, error);
   });
@@ -125,7 +152,8 @@ std::string render(const Scene& source, const std::string& path, const py::objec
     reported = done;
     progress(reported, total.load());
   };
-  const int status = interruptible([&] { return render_scene(scene, o); }, report);
+  const PictureCommands& module = pictures("chainbreak.render");
+  const int status = interruptible([&] { return module.render_scene(scene, o); }, report);
   if (status == 1) throw std::runtime_error("chainbreak.render failed (see stderr)");
   if (status != 0) {
     PyErr_SetNone(PyExc_KeyboardInterrupt);

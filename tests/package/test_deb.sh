@@ -2,8 +2,9 @@
 # The .deb of `cpack -G DEB` (cmake/install.cmake) installs and runs: extracted with dpkg -x
 # into a scratch root (no system install), its chainbreak prints the version and commit,
 # renders a short video from the packaged scenes (through the picture module it finds relative
-# to itself), `run` loads none of the render stack, its Python module imports, its man page is
-# there, and its Depends name the runtime libraries, not -dev packages.
+# to itself), `run` loads none of the render stack, its Python module imports and makes a
+# snapshot (through the same module), its man page is there, and its Depends name the runtime
+# libraries, not -dev packages.
 # Usage: test_deb.sh BUILD_DIR
 set -euo pipefail
 build=$(cd "$1" && pwd)
@@ -49,5 +50,7 @@ assert chainbreak.__file__.startswith('$root'), chainbreak.__file__
 scene = chainbreak.Scene.load('$root/usr/share/chainbreak/scenes/step_pulse.toml')
 scene.set('integrator.t_end', 1.0)
 print('python', chainbreak.__version__, chainbreak.run(scene).tau[-1])
+# snapshot() opens the picture module installed beside the shared core (lib/chainbreak).
+print('python snapshot', chainbreak.snapshot(scene, 0.0, size=(64, 48)).shape)
 "
 echo "deb ok: $deb"
