@@ -280,13 +280,17 @@ TEST_CASE("a block's states and per-step sums equal the one-step kernel's on a m
             std::vector<double> x = psi, v = vel, xn(kBeads), vn(kBeads);
             std::vector<cb::detail::StepOutput> want(2 * count);
             cb::detail::TileScratch scratch;
-            for (int k = 0; k < count; ++k) {
+            // Step k of the one-step path: from x, v into xn, vn.
+            auto step_input = [&](int k) {
               in.psi = x.data();
               in.vel = v.data();
               in.psi_out = xn.data();
               in.vel_out = vn.data();
               in.h = steps[k].h;
               std::copy(steps[k].force, steps[k].force + 3, in.force);
+            };
+            for (int k = 0; k < count; ++k) {
+              step_input(k);
               for (int w = 0; w < 2; ++w)
                 kernel(in, ranges[w].first, ranges[w].second, scratch, want[2 * k + w]);
               x.swap(xn);
@@ -327,12 +331,7 @@ TEST_CASE("a block's states and per-step sums equal the one-step kernel's on a m
             x = psi;
             v = vel;
             for (int k = 0; k < count; ++k) {
-              in.psi = x.data();
-              in.vel = v.data();
-              in.psi_out = xn.data();
-              in.vel_out = vn.data();
-              in.h = steps[k].h;
-              std::copy(steps[k].force, steps[k].force + 3, in.force);
+              step_input(k);
               for (int w = 0; w < 2; ++w) {
                 cb::detail::StepOutput out;
                 kernel(in, ranges[w].first, ranges[w].second, scratch, out);

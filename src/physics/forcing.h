@@ -3,6 +3,9 @@
 // core knows nothing of how (muParser, CSV tables).
 #pragma once
 
+#include <bit>
+#include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -22,6 +25,39 @@ struct Forcing {
   std::vector<Kick> kicks;  // sorted by tau
 
   double operator()(double tau) const { return f ? f(tau) : 0.0; }
+
+  // Whether the step [t0, t1] is one plain interval: no breakpoint in (t0 + snap, t1 + 2 snap]
+  // (none cuts it, its end is not one, with a margin for the rounding of |b - t1| <= snap) and
+  // no kick left before t1 - snap (none is due at t0, none cuts it). `next_breakpoint` is a
+  // cursor into the sorted breakpoints that only moves forward with the clock; `next_kick` the
+  // first kick not yet applied. Integrator::step and the ensemble lanes (lanes.cpp) both ask.
+  bool plain_step(std::size_t& next_breakpoint, std::size_t next_kick, double t0, double t1,
+                  double snap) const {
+    while (next_breakpoint < breakpoints.size() && breakpoints[next_breakpoint] <= t0 + snap)
+      ++next_breakpoint;
+    const bool no_breakpoint =
+        next_breakpoint == breakpoints.size() || breakpoints[next_breakpoint] > t1 + 2.0 * snap;
+    const bool no_kick = next_kick == kicks.size() || kicks[next_kick].tau >= t1 - snap;
+    return no_breakpoint && no_kick;
+  }
+};
+
+// The drive's last value: a step's end is the next step's start, so a step asks for two new
+// values instead of three (f is a function of tau alone).
+class DriveCache {
+ public:
+  double operator()(const Forcing& forcing, double tau) {
+    const std::uint64_t bits = std::bit_cast<std::uint64_t>(tau);
+    if (bits != tau_) {
+      value_ = forcing(tau);
+      tau_ = bits;
+    }
+    return value_;
+  }
+
+ private:
+  std::uint64_t tau_ = 0x7ff8dead00000000ull;  // a NaN: no tau equals it
+  double value_ = 0.0;
 };
 
 }  // namespace cb

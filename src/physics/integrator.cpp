@@ -83,10 +83,7 @@ struct Integrator::Impl {
   // The first breakpoint not yet behind the clock (see step()); only if they are sorted.
   std::size_t next_breakpoint = 0;
   bool breakpoints_sorted = false;
-  // The drive's last value: a step's end is the next step's start, so each step asks for
-  // two new values instead of three. f is a function of tau (forcing.h).
-  std::uint64_t drive_tau = 0x7ff8dead00000000ull;  // a NaN: no tau equals it
-  double drive_f = 0.0;
+  DriveCache drive;  // the drive's last value (forcing.h)
   SimdPath simd;
   detail::Rk4Beads kernel;
   detail::Rk4Chain chain_kernel = nullptr;    // null: always tiled
@@ -191,25 +188,15 @@ bool Integrator::step() {
   const double t1 = static_cast<double>(state_.step + 1) * dt;
   const double snap = 1e-9 * dt;  // closer than this to a grid time counts as on it
 
-  // The common step: no breakpoint in (t0 + snap, t1 + 2 snap] (none cuts it, its end is not
-  // one, with a margin for the rounding of |b - t1| <= snap) and no kick left before
-  // t1 - snap (none is applied at t0, none cuts it). The general code below would make
-  // exactly this one call.
+  // The common step (Forcing::plain_step): the general code below would make exactly this
+  // one call.
   Impl& im = *impl_;
-  if (im.breakpoints_sorted) {
-    const auto& bps = forcing_.breakpoints;
-    while (im.next_breakpoint < bps.size() && bps[im.next_breakpoint] <= t0 + snap)
-      ++im.next_breakpoint;
-    const bool no_breakpoint =
-        im.next_breakpoint == bps.size() || bps[im.next_breakpoint] > t1 + 2.0 * snap;
-    const bool no_kick =
-        im.next_kick == forcing_.kicks.size() || forcing_.kicks[im.next_kick].tau >= t1 - snap;
-    if (no_breakpoint && no_kick) {
-      if (!advance_interval(t0, t1, false)) return false;
-      state_.step += 1;
-      state_.tau = t1;
-      return true;
-    }
+  if (im.breakpoints_sorted &&
+      forcing_.plain_step(im.next_breakpoint, im.next_kick, t0, t1, snap)) {
+    if (!advance_interval(t0, t1, false)) return false;
+    state_.step += 1;
+    state_.tau = t1;
+    return true;
   }
 
   // Split the step at the drive's jumps, kinks and kicks that fall strictly inside it.
@@ -342,12 +329,7 @@ void Integrator::apply_kicks(double up_to) {
 
 double Integrator::drive_at(double tau) const {
   if (state_.string_broken) return 0.0;
-  const std::uint64_t bits = std::bit_cast<std::uint64_t>(tau);
-  if (bits != impl_->drive_tau) {
-    impl_->drive_f = forcing_(tau);
-    impl_->drive_tau = bits;
-  }
-  return impl_->drive_f;
+  return impl_->drive(forcing_, tau);
 }
 
 bool Integrator::rk4(double ta, double tb, bool end_is_breakpoint) {

@@ -1,7 +1,6 @@
 #include "physics/lanes.h"
 
 #include <algorithm>
-#include <bit>
 #include <cassert>
 #include <cmath>
 #include <cstdint>
@@ -32,9 +31,7 @@ struct Lane {
   bool breakpoints_sorted = false;
   std::size_t next_breakpoint = 0;  // the first breakpoint after the current step's start
   std::size_t next_kick = 0;
-  bool has_drive = false;       // the last drive value, as Integrator::drive_at caches it: the
-  std::uint64_t drive_tau = 0;  // end of one step is the start of the next
-  double drive_f = 0.0;
+  DriveCache drive;  // the drive's last value, as Integrator::drive_at keeps it
   double ta = 0.0, tb = 0.0;
   bool end_is_breakpoint = false;
   double p_max = 0.0, m_max = 0.0;  // max_j |phi_j|, |dphi_j/dtau| now (at rest: 0)
@@ -59,18 +56,7 @@ bool on_breakpoint(const Forcing& forcing, double t, double snap) {
   return false;
 }
 
-// Integrator::drive_at: f(tau), computed once for a tau asked twice in a row.
-double drive(Lane& lane, double tau) {
-  const std::uint64_t bits = std::bit_cast<std::uint64_t>(tau);
-  if (!lane.has_drive || bits != lane.drive_tau) {
-    lane.drive_f = lane.job.forcing(tau);
-    lane.drive_tau = bits;
-    lane.has_drive = true;
-  }
-  return lane.drive_f;
-}
-
-// Integrator::step's common step: no breakpoint in (t0 + snap, t1 + 2 snap] and no kick left
+// Integrator::step's common step (Forcing::plain_step): no breakpoint near and no kick left
 // before t1 - snap, so the step is the one interval [t0, t1], no kick is due at its start and
 // its end is no breakpoint. What begin_step, apply_kicks and on_breakpoint would find, without
 // their searches (they cost a lane as much as its share of the kernel at N = 30).
@@ -80,13 +66,8 @@ bool begin_plain_step(Lane& lane) {
   const double t0 = static_cast<double>(lane.step) * dt;
   const double t1 = static_cast<double>(lane.step + 1) * dt;
   const double snap = 1e-9 * dt;
-  const auto& bps = lane.job.forcing.breakpoints;
-  while (lane.next_breakpoint < bps.size() && bps[lane.next_breakpoint] <= t0 + snap)
-    ++lane.next_breakpoint;
-  const auto& kicks = lane.job.forcing.kicks;
-  if (lane.next_breakpoint < bps.size() && bps[lane.next_breakpoint] <= t1 + 2.0 * snap)
+  if (!lane.job.forcing.plain_step(lane.next_breakpoint, lane.next_kick, t0, t1, snap))
     return false;
-  if (lane.next_kick < kicks.size() && kicks[lane.next_kick].tau < t1 - snap) return false;
   lane.cuts.assign(1, t1);
   lane.cut = 0;
   lane.from = t0;
@@ -234,9 +215,9 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
       h2[k] = 0.5 * h[k];
       h6[k] = h[k] / 6.0;
       g2[k] = 2.0 * lane.job.params.gamma;
-      f0[k] = drive(lane, ta);
-      f1[k] = drive(lane, 0.5 * (ta + tb));
-      f2[k] = drive(lane, lane.end_is_breakpoint ? std::nextafter(tb, ta) : tb);
+      f0[k] = lane.drive(lane.job.forcing, ta);
+      f1[k] = lane.drive(lane.job.forcing, 0.5 * (ta + tb));
+      f2[k] = lane.drive(lane.job.forcing, lane.end_is_breakpoint ? std::nextafter(tb, ta) : tb);
       slack[k] = (4.0 / 27.0) * h[k];
       threshold[k] = lane.checks ? lane.job.params.threshold : kInf;
       p0[k] = lane.p_max;
