@@ -166,6 +166,26 @@ TEST_CASE("A record is held to the sweep's limits before merge sizes anything by
     s.shard = bad;
     CHECK_THROWS_WITH(parse_record(record_json(s)), Catch::Contains("is not I/S with 1 <= I <= S"));
   }
+  // Counts that are not whole numbers >= 0: converting 4e109 to long is undefined behaviour
+  // (UBSan caught it in the CI fuzz run), -1 would wrap to a huge size_t, and 2^63 does not
+  // fit a long.
+  const std::string text = record_json(r);
+  const auto with = [&](const std::string& from, const std::string& to) {
+    std::string t = text;
+    const auto at = t.find(from);
+    REQUIRE(at != std::string::npos);
+    return t.replace(at, from.size(), to);
+  };
+  CHECK_THROWS_WITH(
+      parse_record(with("\"peak_memory_kib\": 0", "\"peak_memory_kib\": 4.09111e+109")),
+      Catch::Contains("'peak_memory_kib' is not a whole number"));
+  CHECK_THROWS_WITH(parse_record(with("\"first_point\": 0", "\"first_point\": -1")),
+                    Catch::Contains("'first_point' is not a whole number"));
+  CHECK_THROWS_WITH(parse_record(with("\"index\": 1", "\"index\": 1.5")),
+                    Catch::Contains("'index' is not a whole number"));
+  CHECK_THROWS_WITH(
+      parse_record(with("\"peak_memory_kib\": 0", "\"peak_memory_kib\": 9223372036854775808")),
+      Catch::Contains("'peak_memory_kib' is too large"));
 }
 
 TEST_CASE("A shard CSV with more rows than its record is refused without reading them all",

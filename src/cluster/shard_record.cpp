@@ -1,7 +1,10 @@
 #include "cluster/shard_record.h"
 
+#include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 
 #include "resources/resources.h"  // kMaxSweepValues: a record's grid obeys the sweep's limit
 
@@ -24,6 +27,20 @@ Grid grid_from_json(const json& axes) {
     g.axes.push_back({a.at("key").get<std::string>(), a.at("values").get<std::vector<double>>(),
                       a.at("spec").get<std::string>()});
   return g;
+}
+
+// A count in a record (shard index, point bounds, memory) must be a JSON integer that
+// fits its field: nlohmann's get<integer>() converts a float such as 4e109 by a cast
+// that is undefined behaviour (the fuzzer found it), and a negative one wraps.
+template <class Int>
+Int whole_number(const json& j, const char* key) {
+  const json& v = j.at(key);
+  if (!v.is_number_unsigned())
+    throw std::runtime_error(std::string("its '") + key + "' is not a whole number >= 0");
+  const auto n = v.get<std::uint64_t>();
+  if (n > static_cast<std::uint64_t>(std::numeric_limits<Int>::max()))
+    throw std::runtime_error(std::string("its '") + key + "' is too large");
+  return static_cast<Int>(n);
 }
 
 }  // namespace
@@ -60,11 +77,12 @@ ShardRecord parse_record(const std::string& text) {
     r.solver = j.at("solver").get<std::string>();
     r.header = j.at("header").get<std::string>();
     r.grid = grid_from_json(j.at("grid"));
-    r.shard = {j.at("shard").at("index").get<std::size_t>(),
-               j.at("shard").at("count").get<std::size_t>()};
-    r.points = {j.at("first_point").get<std::size_t>(), j.at("end_point").get<std::size_t>()};
+    r.shard = {whole_number<std::size_t>(j.at("shard"), "index"),
+               whole_number<std::size_t>(j.at("shard"), "count")};
+    r.points = {whole_number<std::size_t>(j, "first_point"),
+                whole_number<std::size_t>(j, "end_point")};
     r.wall_seconds = j.at("wall_seconds").get<double>();
-    r.peak_memory_kib = j.at("peak_memory_kib").get<long>();
+    r.peak_memory_kib = whole_number<long>(j, "peak_memory_kib");
     r.host = j.at("host").get<std::string>();
     r.command = j.at("command").get<std::vector<std::string>>();
     // A record is input like any file (merge reads whatever is in the folder): its grid is
