@@ -278,19 +278,21 @@ TEST_CASE("the small-chain kernel gives the same bytes as the tiled kernel", "[s
         return sim.state();
       };
       INFO("N = " << beads << ", " << v.name);
-      const cb::ChainState base = run(cb::SimdPath::Sse2, true);
+      // SSE2 keeps the tiled kernel even when allowed the chain one (run's REQUIRE): this is
+      // the base, and the AVX paths are held to it with the chain kernel and without.
+      const cb::ChainState base = run(cb::SimdPath::Sse2, false);
       // The chain kernel ran a good part of the run before a first break sent the rest to
       // the tiled one.
       if (v.pull_string && beads >= 7) REQUIRE_FALSE(base.breaks.empty());
       if (!base.breaks.empty() && beads >= 7) CHECK(base.breaks.front().step > 40);
-      for (cb::SimdPath path : {cb::SimdPath::Sse2, cb::SimdPath::Avx2, cb::SimdPath::Avx512}) {
+      for (cb::SimdPath path : {cb::SimdPath::Avx2, cb::SimdPath::Avx512}) {
         if (!cb::simd_supported(path)) {
           WARN("this CPU has no " << cb::simd_name(path) << ": path not checked");
           continue;
         }
         INFO(cb::simd_name(path));
         CHECK(state_bytes(run(path, false)) == state_bytes(base));
-        if (path != cb::SimdPath::Sse2) CHECK(state_bytes(run(path, true)) == state_bytes(base));
+        CHECK(state_bytes(run(path, true)) == state_bytes(base));
       }
     }
   }
