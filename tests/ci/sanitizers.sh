@@ -62,6 +62,11 @@ asan_env() {
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 }
 
+# The test cases that time a signal or the wall clock (a regular expression on their names):
+# both sanitizer jobs run them alone, a core to themselves (ASan is ~3x slower, TSan ~10x; a
+# shared core would add to that).
+WALL_CLOCK_TESTS='SIGINT stops|^interrupted |Ctrl-C|an interrupted run|pacer advances|real-time recording'
+
 asan() {
   stamp "asan: build"
   configure_asan
@@ -71,13 +76,11 @@ asan() {
   # Left out (the Quick start's Release ctest runs both): deb_package (cpack; no code of ours
   # runs in it) and slurm_sweep (shell around the sweep the [cli] tests cover; its speed part
   # sweeps 32 points of a 3000-bead chain twice: over 8 CPU minutes under ASan).
-  # Two passes: the tests that time a signal or the wall clock alone, one at a time (ASan is
-  # ~3x slower, a shared core would add to that); the rest two at a time, one per core (the
-  # suite is ~13 CPU minutes under ASan).
-  local serial='SIGINT stops|^interrupted |Ctrl-C|an interrupted run|pacer advances|real-time recording'
+  # Two passes: the tests that time a signal or the wall clock (WALL_CLOCK_TESTS) alone, one
+  # at a time; the rest two at a time, one per core (the suite is ~18 CPU minutes under ASan).
   ctest --test-dir build-asan --output-on-failure --timeout 1500 -j "${CI_JOBS:-$(nproc)}" \
-    -E "^deb_package\$|^slurm_sweep\$|$serial"
-  ctest --test-dir build-asan --output-on-failure --timeout 1500 -R "$serial"
+    -E "^deb_package\$|^slurm_sweep\$|$WALL_CLOCK_TESTS"
+  ctest --test-dir build-asan --output-on-failure --timeout 1500 -R "$WALL_CLOCK_TESTS"
   stamp "asan: done"
 }
 
@@ -120,8 +123,13 @@ tsan() {
     echo "sanitizers: tsan: no test case matches $TSAN_TESTS" >&2
     return 1
   fi
+  # The wall-clock test cases after the pool, one at a time.
+  { grep -Ev "$WALL_CLOCK_TESTS" "$work/names" || true; } > "$work/pool"
+  { grep -E "$WALL_CLOCK_TESTS" "$work/names" || true; } > "$work/alone"
+  echo "sanitizers: tsan: $(wc -l < "$work/pool") in the pool, $(wc -l < "$work/alone") alone"
   if ! xargs -P "${CI_JOBS:-$(nproc)}" -d '\n' -n 1 "$root/tests/ci/tsan_one.sh" "$work" \
-    < "$work/names"; then
+    < "$work/pool" || ! xargs -d '\n' -n 1 "$root/tests/ci/tsan_one.sh" "$work" < "$work/alone"
+  then
     echo "sanitizers: tsan: a test case failed or raced (its output above)" >&2
     return 1
   fi
