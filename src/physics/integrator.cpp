@@ -9,6 +9,7 @@
 #include <complex>
 #include <cstdint>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 #include <string_view>
 
@@ -279,44 +280,91 @@ int Integrator::small_run(int max_steps) {
   const double dt = options_.dt;
   const double snap = 1e-9 * dt;  // as in step()
   detail::StepInput in = chain_input(state_, params_, im.psi_next, im.vel_next);
+  // The copy of the chain kernel im.chain_kernel would pick at each call.
+  const detail::Rk4Chain kernel = detail::rk4_chain_for(im.simd, in);
   detail::StepOutput& out = im.outputs[0];
-  for (int k = 0; k < max_steps; ++k) {
-    const double t0 = static_cast<double>(state_.step) * dt;
-    const double t1 = static_cast<double>(state_.step + 1) * dt;
-    if (!forcing_.plain_step(im.next_breakpoint, im.next_kick, t0, t1, snap)) return k > 0 ? k : -1;
+  // What commit() and step() change, kept here until the run ends: the step count, the books
+  // (added to step by step, in the same order), and which buffers hold the state (they trade
+  // places at every step; state_ swaps them once at the end if they did an odd number of times).
+  std::int64_t step = state_.step;
+  double dissipated = state_.dissipated, work = state_.work;
+  double *x = state_.psi.data(), *v = state_.vel.data();
+  double *x_next = im.psi_next.data(), *v_next = im.vel_next.data();
+  // Forcing::plain_step for each step. After a plain step its cursor cannot move (the next
+  // breakpoint lies past that step's t1 + 2 snap, so past the next one's t0 + snap), and for the
+  // later steps of a run the test is two comparisons with the next breakpoint and kick (+inf:
+  // none), in the same expressions.
+  constexpr double kNone = std::numeric_limits<double>::infinity();
+  double breakpoint = kNone, kick = kNone;
+  auto plain = [&](int k, double t0, double t1) {
+    if (k > 0) return t1 + 2.0 * snap < breakpoint && t1 - snap <= kick;
+    if (!forcing_.plain_step(im.next_breakpoint, im.next_kick, t0, t1, snap)) return false;
+    if (im.next_breakpoint < forcing_.breakpoints.size())
+      breakpoint = forcing_.breakpoints[im.next_breakpoint];
+    if (im.next_kick < forcing_.kicks.size()) kick = forcing_.kicks[im.next_kick].tau;
+    return true;
+  };
+  // drive_at's values (f is a function of tau alone) without its cache: the run keeps the one
+  // value a step would find there, and the string cannot break within a run.
+  const bool driven = !state_.string_broken;
+  auto drive = [&](double tau) { return driven ? forcing_(tau) : 0.0; };
+  int k = 0;
+  auto end_run = [&] {
+    if (k % 2 == 1) {
+      state_.psi.swap(im.psi_next);
+      state_.vel.swap(im.vel_next);
+    }
+    state_.step = step;
+    state_.tau = static_cast<double>(step) * dt;  // each step's t1, as commit() and step() set it
+    state_.dissipated = dissipated;
+    state_.work = work;
+    return k;
+  };
+  for (; k < max_steps; ++k) {
+    const double t0 = static_cast<double>(step) * dt;
+    const double t1 = static_cast<double>(step + 1) * dt;
+    if (!plain(k, t0, t1)) return k > 0 ? end_run() : -1;
     in.h = t1 - t0;
-    in.force[0] = drive_at(t0);
-    in.force[1] = drive_at(0.5 * (t0 + t1));
-    in.force[2] = drive_at(t1);
+    // A step's start is the last one's end.
+    in.force[0] = k > 0 ? in.force[2] : drive(t0);
+    in.force[1] = drive(0.5 * (t0 + t1));
+    in.force[2] = drive(t1);
     // The pull string's crossing (advance_interval's test) is a break: step() takes that step.
     if (pull_string_live() && pull_string_crossing(t0, t1, in.force[2]) >= 0.0)
-      return k > 0 ? k : -1;
-    in.psi = state_.psi.data();
-    in.vel = state_.vel.data();
-    in.psi_out = im.psi_next.data();
-    in.vel_out = im.vel_next.data();
+      return k > 0 ? end_run() : -1;
+    in.psi = x;
+    in.vel = v;
+    in.psi_out = x_next;
+    in.vel_out = v_next;
     out.reset();
-    im.chain_kernel(in, out);
-    const bool finite = keep_books(in.force, in.h);
-    if (!finite || !out.candidates.empty()) {
+    kernel(in, out);
+    // keep_books's sums, written out so that they are inlined here.
+    const StepBooks books = step_books(
+        1, [&](int) -> const detail::StepOutput& { return out; }, in.force, in.h);
+    if (!books.finite || !out.candidates.empty()) {
       // A step that may break a spring or fail ends a run. After other steps the next call
       // redoes it, so that the caller sees those steps (a run loop's observers) before a
       // failure, as it would one step at a time.
-      if (k > 0) return k;
-      if (!finite) {
+      if (k > 0) return end_run();
+      if (!books.finite) {
         report_non_finite(t0);
         return 0;
       }
+      stage_dissipation_ = books.dissipated;
+      stage_work_ = books.work;
       if (!settle_interval(t0, t1, false)) return 0;
       state_.step += 1;
       state_.tau = t1;
       return 1;
     }
-    commit(t1);
-    state_.step += 1;
-    state_.tau = t1;
+    // commit(t1) and step()'s count.
+    std::swap(x, x_next);
+    std::swap(v, v_next);
+    dissipated += books.dissipated;
+    work += books.work;
+    step += 1;
   }
-  return max_steps;
+  return end_run();
 }
 
 // Whether step() would take `step` as one plain RK4 step: no kick at its start, no jump,
