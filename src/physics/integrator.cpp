@@ -268,7 +268,9 @@ bool Integrator::small_run_allowed() const {
 }
 
 // Up to `max_steps` steps of a small chain with every spring intact, as step() takes them, without
-// its dispatch per step: at N = 30 that dispatch cost a third of the kernel's instructions. Each
+// its dispatch per step: at N = 30 (AVX2) that dispatch and the run loop's cost ~430 instructions
+// a step against the kernel's ~1210, and slowed the step more than that (callgrind; the bench
+// README's session-7 numbers). Each
 // step must be one plain interval (Forcing::plain_step) without a pull-string crossing; its h and
 // drive values, kernel call, energy books and commit are those of step() -> advance_interval() ->
 // rk4() -> commit(), in the same order. A step whose output holds a crossing candidate or a value
@@ -304,8 +306,9 @@ int Integrator::small_run(int max_steps) {
     if (im.next_kick < forcing_.kicks.size()) kick = forcing_.kicks[im.next_kick].tau;
     return true;
   };
-  // drive_at's values (f is a function of tau alone) without its cache: the run keeps the one
-  // value a step would find there, and the string cannot break within a run.
+  // drive_at's values without its cache and tests per call: f is a function of tau alone, a
+  // step's start is the last one's end (the value the cache would give), and the string cannot
+  // break within a run.
   const bool driven = !state_.string_broken;
   auto drive = [&](double tau) { return driven ? forcing_(tau) : 0.0; };
   int k = 0;

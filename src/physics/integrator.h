@@ -5,7 +5,9 @@
 // instead of once per stage; results do not depend on the tile size or thread count.
 // A small chain on one worker with no spring broken takes a kernel without tiles, the four
 // stages as a register wavefront (rk4_chain.h, AVX2 and AVX-512): the same bits, 1.5-3.4x
-// the tiled kernel's speed at N = 30 .. 1000 (tests/bench/README.md).
+// the tiled kernel's speed at N = 30 .. 1000 (tests/bench/README.md). Such a chain's plain steps
+// go in runs (step_up_to): the kernel called directly, the per-step tests of step() reduced to
+// what can change from one plain step to the next, the same bits.
 // A spring that crosses its threshold inside a step is located by cubic Hermite
 // interpolation of phi_j from psi and psi' at both ends (error O(h^4)); the step is
 // redone up to that time, the spring removed, and the rest of the step integrated.
