@@ -297,3 +297,110 @@ TEST_CASE("the small-chain kernel gives the same bytes as the tiled kernel", "[s
     }
   }
 }
+
+// Integrator::step_up_to takes a small chain's plain steps in runs (up to kSmallRunSteps a
+// call), calling the chain kernel directly and handing a step that may break a spring, or whose
+// state is not finite, to advance_interval's code with the kernel's output. Held here to one
+// step() at a time on the same kernel (the per-step path it short-cuts) and on the tiled kernel,
+// through the run loop with observers that cut the runs short (every 1, 5 and 64 steps) and
+// without: breaks (the hand-over), the pull string, kicks and a drive's jump inside steps (runs
+// stop before them), the stretch rule, and a blow-up (the same step, error and bytes).
+// Tolerance: none, the bytes must be equal.
+TEST_CASE("a small chain's runs of steps give the bytes of one step at a time",
+          "[simd][small][run_loop]") {
+  struct Variant {
+    const char* name;
+    int beads;
+    double gamma, threshold;
+    cb::BreakMode mode;
+    bool pull_string;
+    cb::DriveDesc drive;
+    double dt;
+    std::int64_t steps;
+    bool kicks;
+    bool blows_up;
+  };
+  constexpr double kNever = std::numeric_limits<double>::infinity();
+  auto drive = [](cb::DriveType type, double amplitude, double beta, double t0) {
+    cb::DriveDesc d;
+    d.type = type;
+    d.amplitude = amplitude;
+    d.beta = beta;
+    d.period = 17.0;
+    d.t0 = t0;
+    return d;
+  };
+  using cb::BreakMode;
+  using cb::DriveType;
+  const Variant variants[] = {
+      // The paper's ramp: six springs break, each in a step first taken by a run.
+      {"N=30 ramp, breaks", 30, 0.0, 1.0, BreakMode::Abs, false, drive(DriveType::Ramp, 1, 0.05, 0),
+       0.01, 20000, false, false},
+      {"N=30 friction, pull string, kicks", 30, 0.05, 1.0, BreakMode::Abs, true,
+       drive(DriveType::Ramp, 1, 0.004, 0), 0.05, 6000, true, false},
+      // A step drive switched on between grid points: that step is split, the others are runs.
+      {"N=33 step drive off the grid, stretch", 33, 0.02, 0.7, BreakMode::Stretch, false,
+       drive(DriveType::Step, 0.8, 1, 0.1234), 0.01, 8000, true, false},
+      {"N=7 sine, unbreakable", 7, 0.1, kNever, BreakMode::Abs, false,
+       drive(DriveType::Sine, 0.4, 1, 0), 0.1, 3000, false, false},
+      {"N=1000 ramp, friction", 1000, 0.1, 0.9, BreakMode::Abs, false,
+       drive(DriveType::Ramp, 1, 0.01, 0), 0.2, 3000, false, false},
+      // dt beyond RK4's stability limit (~1.39 for N = 10, gamma = 0): the state blows up.
+      {"N=10 blow-up", 10, 0.0, kNever, BreakMode::Abs, false, drive(DriveType::Ramp, 1, 0.01, 0),
+       1.6, 5000, false, true},
+  };
+  for (const Variant& v : variants) {
+    cb::ChainParams p;
+    p.beads = v.beads;
+    p.gamma = v.gamma;
+    p.threshold = v.threshold;
+    p.break_on = v.mode;
+    p.pull_string = v.pull_string;
+    cb::Forcing forcing = cb::make_forcing(v.drive);
+    if (v.kicks) forcing.kicks = {{0.505, 0.7}, {3.2551, -0.4}, {40.0, 0.3}};
+    for (cb::SimdPath path : {cb::SimdPath::Avx2, cb::SimdPath::Avx512}) {
+      if (!cb::simd_supported(path)) {
+        WARN("this CPU has no " << cb::simd_name(path) << ": path not checked");
+        continue;
+      }
+      INFO(v.name << ", " << cb::simd_name(path));
+      auto one_at_a_time = [&](bool tiled_only, std::string& error) {
+        cb::IntegratorOptions o{v.dt, 1, path, 1};
+        o.tiled_only = tiled_only;
+        cb::Integrator sim(p, forcing, o);
+        REQUIRE(sim.small_chain_kernel() == !tiled_only);
+        while (sim.state().step < v.steps && sim.step()) {
+        }
+        error = sim.error();
+        // Not vacuous: a breakable chain broke (a step handed over), a blow-up blew up.
+        CHECK(sim.state().breaks.empty() == !p.breakable());
+        CHECK(error.empty() == !v.blows_up);
+        return state_bytes(sim.state());
+      };
+      std::string error_steps, error_tiled;
+      const auto by_steps = one_at_a_time(false, error_steps);
+      CHECK(one_at_a_time(true, error_tiled) == by_steps);
+      CHECK(error_tiled == error_steps);
+      for (std::int64_t every : {0, 1, 5, 64}) {
+        INFO("observer every " << every);
+        cb::Integrator sim(p, forcing, {v.dt, 1, path, 1});
+        std::vector<cb::Observer> observers;
+        if (every > 0) observers.push_back({every, false, [](const cb::Integrator&) {}});
+        const cb::RunEnd end =
+            cb::run_until(sim, {v.steps, std::nullopt, false, nullptr}, observers);
+        CHECK(end == (v.blows_up ? cb::RunEnd::Failed : cb::RunEnd::Reached));
+        CHECK(sim.error() == error_steps);
+        CHECK(state_bytes(sim.state()) == by_steps);
+      }
+      // Not vacuous: most steps went in runs (before the first break, or all of them).
+      cb::Integrator sim(p, forcing, {v.dt, 1, path, 1});
+      std::int64_t in_runs = 0;
+      while (sim.state().step < v.steps && sim.state().breaks.empty()) {
+        const int taken = sim.step_up_to(v.steps - sim.state().step);
+        if (taken == 0) break;
+        if (taken > 1) in_runs += taken;
+      }
+      CHECK(in_runs > sim.state().step / 2);
+    }
+  }
+}

@@ -9,6 +9,7 @@
 #include <complex>
 #include <cstdint>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 #include <string_view>
 
@@ -227,6 +228,11 @@ bool Integrator::step() {
 
 int Integrator::step_up_to(std::int64_t max_steps) {
   Impl& im = *impl_;
+  if (small_run_allowed()) {
+    const int taken =
+        small_run(static_cast<int>(std::clamp<std::int64_t>(max_steps, 1, kSmallRunSteps)));
+    if (taken >= 0) return taken;
+  }
   const int count = static_cast<int>(std::min<std::int64_t>(im.block_steps, max_steps));
   if (count >= 2 && state_.step >= im.no_block_before && error_.empty()) {
     im.plain.resize(count);
@@ -253,6 +259,117 @@ int Integrator::step_up_to(std::int64_t max_steps) {
   return step() ? 1 : 0;
 }
 
+// A small chain on the one-chain kernel, every spring intact, stepped one step at a time (a
+// temporal block, where asked for, keeps its own path and tests).
+bool Integrator::small_run_allowed() const {
+  const Impl& im = *impl_;
+  return im.chain_kernel && im.block_steps == 1 && state_.broken.empty() && im.breakpoints_sorted &&
+         error_.empty();
+}
+
+// Up to `max_steps` steps of a small chain with every spring intact, as step() takes them, without
+// its dispatch per step: at N = 30 (AVX2) that dispatch and the run loop's cost ~430 instructions
+// a step against the kernel's ~1210, and slowed the step more than that (callgrind; the bench
+// README's session-7 numbers). Each
+// step must be one plain interval (Forcing::plain_step) without a pull-string crossing; its h and
+// drive values, kernel call, energy books and commit are those of step() -> advance_interval() ->
+// rk4() -> commit(), in the same order. A step whose output holds a crossing candidate or a value
+// that is not finite ends the run; as its first step, it goes on in advance_interval's own code
+// from that output (no second kernel call). Returns the steps taken, 0 when the state stopped
+// being finite, -1 when the first step is not plain (nothing done: step() takes it).
+int Integrator::small_run(int max_steps) {
+  Impl& im = *impl_;
+  const double dt = options_.dt;
+  const double snap = 1e-9 * dt;  // as in step()
+  detail::StepInput in = chain_input(state_, params_, im.psi_next, im.vel_next);
+  // The copy of the chain kernel im.chain_kernel would pick at each call.
+  const detail::Rk4Chain kernel = detail::rk4_chain_for(im.simd, in);
+  detail::StepOutput& out = im.outputs[0];
+  // What commit() and step() change, kept here until the run ends: the step count, the books
+  // (added to step by step, in the same order), and which buffers hold the state (they trade
+  // places at every step; state_ swaps them once at the end if they did an odd number of times).
+  std::int64_t step = state_.step;
+  double dissipated = state_.dissipated, work = state_.work;
+  double *x = state_.psi.data(), *v = state_.vel.data();
+  double *x_next = im.psi_next.data(), *v_next = im.vel_next.data();
+  // Forcing::plain_step for each step. After a plain step its cursor cannot move (the next
+  // breakpoint lies past that step's t1 + 2 snap, so past the next one's t0 + snap), and for the
+  // later steps of a run the test is two comparisons with the next breakpoint and kick (+inf:
+  // none), in the same expressions.
+  constexpr double kNone = std::numeric_limits<double>::infinity();
+  double breakpoint = kNone, kick = kNone;
+  auto plain = [&](int k, double t0, double t1) {
+    if (k > 0) return t1 + 2.0 * snap < breakpoint && t1 - snap <= kick;
+    if (!forcing_.plain_step(im.next_breakpoint, im.next_kick, t0, t1, snap)) return false;
+    if (im.next_breakpoint < forcing_.breakpoints.size())
+      breakpoint = forcing_.breakpoints[im.next_breakpoint];
+    if (im.next_kick < forcing_.kicks.size()) kick = forcing_.kicks[im.next_kick].tau;
+    return true;
+  };
+  // drive_at's values without its cache and tests per call: f is a function of tau alone, a
+  // step's start is the last one's end (the value the cache would give), and the string cannot
+  // break within a run.
+  const bool driven = !state_.string_broken;
+  auto drive = [&](double tau) { return driven ? forcing_(tau) : 0.0; };
+  int k = 0;
+  auto end_run = [&] {
+    if (k % 2 == 1) {
+      state_.psi.swap(im.psi_next);
+      state_.vel.swap(im.vel_next);
+    }
+    state_.step = step;
+    state_.tau = static_cast<double>(step) * dt;  // each step's t1, as commit() and step() set it
+    state_.dissipated = dissipated;
+    state_.work = work;
+    return k;
+  };
+  for (; k < max_steps; ++k) {
+    const double t0 = static_cast<double>(step) * dt;
+    const double t1 = static_cast<double>(step + 1) * dt;
+    if (!plain(k, t0, t1)) return k > 0 ? end_run() : -1;
+    in.h = t1 - t0;
+    // A step's start is the last one's end.
+    in.force[0] = k > 0 ? in.force[2] : drive(t0);
+    in.force[1] = drive(0.5 * (t0 + t1));
+    in.force[2] = drive(t1);
+    // The pull string's crossing (advance_interval's test) is a break: step() takes that step.
+    if (pull_string_live() && pull_string_crossing(t0, t1, in.force[2]) >= 0.0)
+      return k > 0 ? end_run() : -1;
+    in.psi = x;
+    in.vel = v;
+    in.psi_out = x_next;
+    in.vel_out = v_next;
+    out.reset();
+    kernel(in, out);
+    // keep_books's sums, written out so that they are inlined here.
+    const StepBooks books = step_books(
+        1, [&](int) -> const detail::StepOutput& { return out; }, in.force, in.h);
+    if (!books.finite || !out.candidates.empty()) {
+      // A step that may break a spring or fail ends a run. After other steps the next call
+      // redoes it, so that the caller sees those steps (a run loop's observers) before a
+      // failure, as it would one step at a time.
+      if (k > 0) return end_run();
+      if (!books.finite) {
+        report_non_finite(t0);
+        return 0;
+      }
+      stage_dissipation_ = books.dissipated;
+      stage_work_ = books.work;
+      if (!settle_interval(t0, t1, false)) return 0;
+      state_.step += 1;
+      state_.tau = t1;
+      return 1;
+    }
+    // commit(t1) and step()'s count.
+    std::swap(x, x_next);
+    std::swap(v, v_next);
+    dissipated += books.dissipated;
+    work += books.work;
+    step += 1;
+  }
+  return end_run();
+}
+
 // Whether step() would take `step` as one plain RK4 step: no kick at its start, no jump,
 // kink or kick inside it, and no pull-string crossing in it. If so, the step's h and the
 // drive at its stages, computed exactly as step() and rk4() compute them.
@@ -275,12 +392,19 @@ bool Integrator::plain_step(std::int64_t step, double* h, double force[3]) const
   force[0] = drive_at(t0);
   force[1] = drive_at(0.5 * (t0 + t1));
   force[2] = drive_at(t_end);
-  if (params_.pull_string && params_.breakable() && !state_.string_broken) {
-    const double t = detail::first_time_at_least(
-        forcing_.f ? forcing_.f : [](double) { return 0.0; }, force[2], t0, t1, params_.threshold);
-    if (t >= 0.0) return false;
-  }
-  return true;
+  return !pull_string_live() || pull_string_crossing(t0, t1, force[2]) < 0.0;
+}
+
+// Whether the drive acts through a pull string that may still break.
+bool Integrator::pull_string_live() const {
+  return params_.pull_string && params_.breakable() && !state_.string_broken;
+}
+
+// When in [ta, tb] the drive first reaches the pull string's threshold (f_end: the drive at tb
+// as the step's last stage sees it); negative when never.
+double Integrator::pull_string_crossing(double ta, double tb, double f_end) const {
+  return detail::first_time_at_least(
+      forcing_.f ? forcing_.f : [](double) { return 0.0; }, f_end, ta, tb, params_.threshold);
 }
 
 // `count` plain steps (impl_->plain) as one temporal block over the whole chain, committed
@@ -351,9 +475,15 @@ bool Integrator::rk4(double ta, double tb, bool end_is_breakpoint) {
       im.kernel(in, im.ranges[w].first, im.ranges[w].second, im.scratch[w], im.outputs[w]);
     });
   }
+  return keep_books(in.force, in.h);
+}
+
+// The energy books of the step of h in the workers' outputs, with the drive's stage values
+// `force`, kept for commit(); false when a new value is not finite.
+bool Integrator::keep_books(const double force[3], double h) {
+  Impl& im = *impl_;
   const StepBooks books = step_books(
-      im.pool.size(), [&](int w) -> const detail::StepOutput& { return im.outputs[w]; }, in.force,
-      in.h);
+      im.pool.size(), [&](int w) -> const detail::StepOutput& { return im.outputs[w]; }, force, h);
   stage_dissipation_ = books.dissipated;
   stage_work_ = books.work;
   return books.finite;
@@ -368,11 +498,17 @@ void Integrator::commit(double tb) {
 }
 
 bool Integrator::advance_interval(double ta, double tb, bool end_is_breakpoint) {
-  for (int guard = 0; guard <= params_.beads + 1; ++guard) {
-    if (!rk4(ta, tb, end_is_breakpoint)) {
-      report_non_finite(ta);
-      return false;
-    }
+  if (!rk4(ta, tb, end_is_breakpoint)) {
+    report_non_finite(ta);
+    return false;
+  }
+  return settle_interval(ta, tb, end_is_breakpoint);
+}
+
+// The rest of advance_interval once the outputs hold a finite rk4(ta, tb, end_is_breakpoint):
+// commit it, or integrate to the earliest crossing, break that spring and redo the rest.
+bool Integrator::settle_interval(double ta, double tb, bool end_is_breakpoint) {
+  for (int guard = 0;; ++guard) {
     // The earliest threshold crossing inside (ta, tb], if any.
     double first = tb + 1.0;
     int spring = -1;
@@ -386,10 +522,9 @@ bool Integrator::advance_interval(double ta, double tb, bool end_is_breakpoint) 
           spring = c.spring;
         }
       }
-    if (params_.pull_string && params_.breakable() && !state_.string_broken) {
+    if (pull_string_live()) {
       const double f_end = drive_at(end_is_breakpoint ? std::nextafter(tb, ta) : tb);
-      const double t = detail::first_time_at_least(
-          forcing_.f ? forcing_.f : [](double) { return 0.0; }, f_end, ta, tb, params_.threshold);
+      const double t = pull_string_crossing(ta, tb, f_end);
       if (t >= 0.0 && t <= first) {
         first = t;
         spring = 0;
@@ -409,9 +544,13 @@ bool Integrator::advance_interval(double ta, double tb, bool end_is_breakpoint) 
     }
     break_spring(spring, first);
     ta = first;
-    if (ta >= tb) return true;
+    // No more breaks in one interval than springs and string (a guard, never reached).
+    if (ta >= tb || guard == params_.beads + 1) return true;
+    if (!rk4(ta, tb, end_is_breakpoint)) {
+      report_non_finite(ta);
+      return false;
+    }
   }
-  return true;
 }
 
 void Integrator::break_spring(int spring, double tau) {

@@ -5,7 +5,9 @@
 // instead of once per stage; results do not depend on the tile size or thread count.
 // A small chain on one worker with no spring broken takes a kernel without tiles, the four
 // stages as a register wavefront (rk4_chain.h, AVX2 and AVX-512): the same bits, 1.5-3.4x
-// the tiled kernel's speed at N = 30 .. 1000 (tests/bench/README.md).
+// the tiled kernel's speed at N = 30 .. 1000 (tests/bench/README.md). Such a chain's plain steps
+// go in runs (step_up_to): the kernel called directly, the per-step tests of step() reduced to
+// what can change from one plain step to the next, the same bits.
 // A spring that crosses its threshold inside a step is located by cubic Hermite
 // interpolation of phi_j from psi and psi' at both ends (error O(h^4)); the step is
 // redone up to that time, the spring removed, and the rest of the step integrated.
@@ -42,6 +44,9 @@ struct IntegratorOptions {
 inline constexpr int kDefaultBlockSteps = 8;
 inline constexpr int kBlockMinBeads = 65536;  // below this, the chain stays in L2 anyway
 inline constexpr int kMaxBlockSteps = 64;     // the most block_steps may be
+// The most steps one step_up_to call takes on a small chain in one run (a run loop polls its
+// cancel flag between calls: ~30 us at N = 30, a few ms at N = 20000).
+inline constexpr int kSmallRunSteps = 64;
 
 // A CHAINBREAK_BLOCK_STEPS value: null, "" or "auto" give nothing (the default above), else a
 // step count from 0 (off) to kMaxBlockSteps for every integrator of the process. Throws
@@ -63,9 +68,10 @@ class Integrator {
   // stops being finite.
   bool step();
   // Advances at least one and at most `max_steps` steps, with the same result as as many
-  // step() calls; more than one only as a temporal block (IntegratorOptions::block_steps),
-  // which never holds a break, so a break can only fall in the last step taken. Returns the
-  // steps taken, 0 when the state stopped being finite (error() says why).
+  // step() calls; more than one only as a temporal block (IntegratorOptions::block_steps) or a
+  // run of a small chain's plain steps (up to kSmallRunSteps), neither of which holds a break
+  // before its last step. Returns the steps taken, 0 when the state stopped being finite
+  // (error() says why).
   int step_up_to(std::int64_t max_steps);
   // Steps until `target_step`; stops early on a non-finite state. Shorthand for run_until
   // (physics/run_loop.h) with a step count as the only stop rule.
@@ -99,9 +105,15 @@ class Integrator {
   double stage_work_ = 0.0;
 
   bool advance_interval(double t_from, double t_to, bool end_is_breakpoint);
+  bool settle_interval(double t_from, double t_to, bool end_is_breakpoint);
+  bool small_run_allowed() const;
+  int small_run(int max_steps);  // -1 when the first step is not plain, else as step_up_to
   bool plain_step(std::int64_t step, double* h, double force[3]) const;
+  bool pull_string_live() const;
+  double pull_string_crossing(double t_from, double t_to, double f_end) const;
   int step_block(int count);  // -1 when done, else the first step found not plain
   bool rk4(double t_from, double t_to, bool end_is_breakpoint);  // into the scratch state
+  bool keep_books(const double force[3], double h);
   void commit(double t_to);
   void apply_kicks(double up_to);
   void break_spring(int spring, double tau);

@@ -16,6 +16,18 @@ Rk4Chain rk4_chain_kernel(SimdPath path) {
   return nullptr;
 }
 
+Rk4Chain rk4_chain_for(SimdPath path, const StepInput& in) {
+  switch (path) {
+    case SimdPath::Avx512:
+      return avx512::rk4_chain_for(in);
+    case SimdPath::Avx2:
+      return avx2::rk4_chain_for(in);
+    case SimdPath::Sse2:
+      break;
+  }
+  return nullptr;
+}
+
 Rk4Window rk4_window_kernel(SimdPath path) {
   switch (path) {
     case SimdPath::Avx512:

@@ -24,6 +24,17 @@ void rk4_chain(const StepInput& in, StepOutput& out);
 }
 // The kernel for the path, or null where the tiled kernel is the faster one (SSE2).
 Rk4Chain rk4_chain_kernel(SimdPath path);
+// The copy of that kernel rk4_chain calls for a chain like `in`'s (its length, whether it has
+// friction and crossing checks), found once for many steps of the chain (Integrator's runs of
+// small-chain steps): the same function, without the choice per call. Null where
+// rk4_chain_kernel(path) is.
+Rk4Chain rk4_chain_for(SimdPath path, const StepInput& in);
+namespace avx2 {
+Rk4Chain rk4_chain_for(const StepInput& in);
+}
+namespace avx512 {
+Rk4Chain rk4_chain_for(const StepInput& in);
+}
 
 // One step of beads [first, last) of a window of the chain (rk4_window_kernel.inc), for
 // temporal blocks: reads old values of beads [first - kHalo, last + kHalo) only (clipped to

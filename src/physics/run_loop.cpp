@@ -36,7 +36,8 @@ RunEnd run_until(Integrator& sim, const StopRule& stop, const std::vector<Observ
   while (sim.state().step < last) {
     if (stop.cancel && stop.cancel->load(std::memory_order_relaxed)) return RunEnd::Cancelled;
     // The steps up to the next observation or stop are plain as far as this loop is
-    // concerned: the integrator may take them as one temporal block (never across a break).
+    // concerned: the integrator may take them as one temporal block or a run of a small
+    // chain's steps (never across a break), and this loop's tests are paid once for all.
     const std::int64_t step = sim.state().step;
     std::int64_t room = last - step;
     for (const Observer& o : observers)

@@ -23,8 +23,9 @@ struct StopRule {
   // Stop this long (in tau) after the first break, rounded up to the step grid.
   std::optional<double> after_break;
   bool at_first_break = false;  // stop at the end of the step in which the first break fell
-  // Polled before every step, or every temporal block of steps (IntegratorOptions::
-  // block_steps): a signal handler or a GUI sets it to cancel the run.
+  // Polled before every step, every temporal block of steps (IntegratorOptions::
+  // block_steps) or every run of a small chain's steps (at most kSmallRunSteps): a signal
+  // handler or a GUI sets it to cancel the run.
   const std::atomic<bool>* cancel = nullptr;
 };
 
