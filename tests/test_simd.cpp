@@ -33,6 +33,18 @@ std::vector<unsigned char> state_bytes(const cb::ChainState& s) {
   return out;
 }
 
+// A chain of the cases below: their fields in one call.
+cb::ChainParams chain_of(int beads, double gamma, double threshold, cb::BreakMode mode,
+                         bool pull_string) {
+  cb::ChainParams p;
+  p.beads = beads;
+  p.gamma = gamma;
+  p.threshold = threshold;
+  p.break_on = mode;
+  p.pull_string = pull_string;
+  return p;
+}
+
 struct Scene {
   const char* name;
   cb::ChainParams chain;
@@ -165,12 +177,7 @@ TEST_CASE("every SIMD path reproduces the bytes of the integrator before the SIM
        0xe07e5919c14e7606ull},
   };
   for (const Case& c : cases) {
-    cb::ChainParams p;
-    p.beads = c.beads;
-    p.gamma = c.gamma;
-    p.threshold = c.threshold;
-    p.break_on = c.mode;
-    p.pull_string = c.pull_string;
+    const cb::ChainParams p = chain_of(c.beads, c.gamma, c.threshold, c.mode, c.pull_string);
     cb::DriveDesc d;
     d.type = c.drive;
     d.amplitude = c.amplitude;
@@ -254,12 +261,7 @@ TEST_CASE("the small-chain kernel gives the same bytes as the tiled kernel", "[s
   };
   for (int beads : {1, 2, 3, 7, 12, 30, 33, 511, 512, 513, 1000}) {
     for (const Variant& v : variants) {
-      cb::ChainParams p;
-      p.beads = beads;
-      p.gamma = v.gamma;
-      p.threshold = v.threshold;
-      p.break_on = v.mode;
-      p.pull_string = v.pull_string;
+      const cb::ChainParams p = chain_of(beads, v.gamma, v.threshold, v.mode, v.pull_string);
       cb::DriveDesc d;
       d.type = v.drive;
       d.beta = v.beta;
@@ -350,12 +352,7 @@ TEST_CASE("a small chain's runs of steps give the bytes of one step at a time",
        1.6, 5000, false, true},
   };
   for (const Variant& v : variants) {
-    cb::ChainParams p;
-    p.beads = v.beads;
-    p.gamma = v.gamma;
-    p.threshold = v.threshold;
-    p.break_on = v.mode;
-    p.pull_string = v.pull_string;
+    const cb::ChainParams p = chain_of(v.beads, v.gamma, v.threshold, v.mode, v.pull_string);
     cb::Forcing forcing = cb::make_forcing(v.drive);
     if (v.kicks) forcing.kicks = {{0.505, 0.7}, {3.2551, -0.4}, {40.0, 0.3}};
     for (cb::SimdPath path : {cb::SimdPath::Avx2, cb::SimdPath::Avx512}) {
