@@ -9,7 +9,6 @@
 #include <complex>
 #include <cstdint>
 #include <cstdlib>
-#include <limits>
 #include <sstream>
 #include <string_view>
 
@@ -292,24 +291,11 @@ int Integrator::small_run(int max_steps) {
   double dissipated = state_.dissipated, work = state_.work;
   double *x = state_.psi.data(), *v = state_.vel.data();
   double *x_next = im.psi_next.data(), *v_next = im.vel_next.data();
-  // Forcing::plain_step for each step. After a plain step its cursor cannot move (the next
-  // breakpoint lies past that step's t1 + 2 snap, so past the next one's t0 + snap), and for the
-  // later steps of a run the test is two comparisons with the next breakpoint and kick (+inf:
-  // none), in the same expressions.
-  constexpr double kNone = std::numeric_limits<double>::infinity();
-  double breakpoint = kNone, kick = kNone;
-  auto plain = [&](int k, double t0, double t1) {
-    if (k > 0) return t1 + 2.0 * snap < breakpoint && t1 - snap <= kick;
-    if (!forcing_.plain_step(im.next_breakpoint, im.next_kick, t0, t1, snap)) return false;
-    if (im.next_breakpoint < forcing_.breakpoints.size())
-      breakpoint = forcing_.breakpoints[im.next_breakpoint];
-    if (im.next_kick < forcing_.kicks.size()) kick = forcing_.kicks[im.next_kick].tau;
-    return true;
-  };
   // drive_at's values without its cache and tests per call: f is a function of tau alone, a
   // step's start is the last one's end (the value the cache would give), and the string cannot
   // break within a run.
   const bool driven = !state_.string_broken;
+  const bool string_live = pull_string_live();
   auto drive = [&](double tau) { return driven ? forcing_(tau) : 0.0; };
   int k = 0;
   auto end_run = [&] {
@@ -326,14 +312,15 @@ int Integrator::small_run(int max_steps) {
   for (; k < max_steps; ++k) {
     const double t0 = static_cast<double>(step) * dt;
     const double t1 = static_cast<double>(step + 1) * dt;
-    if (!plain(k, t0, t1)) return k > 0 ? end_run() : -1;
+    if (!forcing_.plain_step(im.next_breakpoint, im.next_kick, t0, t1, snap))
+      return k > 0 ? end_run() : -1;
     in.h = t1 - t0;
     // A step's start is the last one's end.
     in.force[0] = k > 0 ? in.force[2] : drive(t0);
     in.force[1] = drive(0.5 * (t0 + t1));
     in.force[2] = drive(t1);
     // The pull string's crossing (advance_interval's test) is a break: step() takes that step.
-    if (pull_string_live() && pull_string_crossing(t0, t1, in.force[2]) >= 0.0)
+    if (string_live && pull_string_crossing(t0, t1, in.force[2]) >= 0.0)
       return k > 0 ? end_run() : -1;
     in.psi = x;
     in.vel = v;

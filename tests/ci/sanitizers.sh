@@ -112,10 +112,10 @@ tsan() {
   # other on one core (190 s, the other core idle but for the few threaded moments); a pool
   # takes ~110 s. A process starts in 0.2 s. Catch reads a name as a test spec, so its
   # commas, brackets, stars and backslashes are escaped.
-  local work
+  local work program=./build-tsan/tests/chainbreak_tests
   work=$(mktemp -d)
   # Catch's exit status after a listing is the number of names listed, not an error.
-  ./build-tsan/tests/chainbreak_tests "$TSAN_TESTS" --list-test-names-only > "$work/listed" ||
+  "$program" "$TSAN_TESTS" --list-test-names-only > "$work/listed" ||
     true
   { grep -v '^$' "$work/listed" || true; } | sed 's/[],[\\*]/\\&/g' > "$work/names"
   echo "sanitizers: tsan: $(wc -l < "$work/names") test cases"
@@ -127,8 +127,9 @@ tsan() {
   { grep -Ev "$WALL_CLOCK_TESTS" "$work/names" || true; } > "$work/pool"
   { grep -E "$WALL_CLOCK_TESTS" "$work/names" || true; } > "$work/alone"
   echo "sanitizers: tsan: $(wc -l < "$work/pool") in the pool, $(wc -l < "$work/alone") alone"
-  if ! xargs -P "${CI_JOBS:-$(nproc)}" -d '\n' -n 1 "$root/tests/ci/tsan_one.sh" "$work" \
-    < "$work/pool" || ! xargs -d '\n' -n 1 "$root/tests/ci/tsan_one.sh" "$work" < "$work/alone"
+  if ! xargs -P "${CI_JOBS:-$(nproc)}" -d '\n' -n 1 "$root/tests/ci/tsan_one.sh" "$work" "$program" \
+    < "$work/pool" ||
+    ! xargs -d '\n' -n 1 "$root/tests/ci/tsan_one.sh" "$work" "$program" < "$work/alone"
   then
     echo "sanitizers: tsan: a test case failed or raced (its output above)" >&2
     return 1
