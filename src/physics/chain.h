@@ -17,6 +17,17 @@ enum class BreakMode {
   Stretch,  // phi_j >= phi_c: only tension breaks a spring
 };
 
+// The general chain of issue #21 (the paper's invitation to inhomogeneous chains):
+//   m_j psi_j'' = K_j (psi_{j-1} - psi_j) + K_{j+1} (psi_{j+1} - psi_j) - 2 gamma m_j psi_j'
+//                 + f delta_jN,   psi_0 = 0, K_{N+1} = 0,
+// in the paper's units (m_j relative to m, K_j relative to K). Friction is proportional to
+// mass, so gamma keeps its meaning and the normal modes stay uncoupled. Spring j breaks when
+// |phi_j| >= phi_c,j (phi_j >= phi_c,j for BreakMode::Stretch).
+//
+// The per-bead and per-spring arrays are empty for the paper's uniform chain (every m_j = K_j
+// = 1, every phi_c,j = threshold): that chain takes the uniform coefficient policy and keeps
+// its bits. normalize() clears an array whose values are all the uniform ones, so a chain
+// written with arrays of ones is the uniform chain too.
 struct ChainParams {
   int beads = 30;                                              // N
   double gamma = 0.0;                                          // friction -2 gamma psi'
@@ -24,7 +35,29 @@ struct ChainParams {
   BreakMode break_on = BreakMode::Abs;
   bool pull_string = false;  // f acts through a massless string that breaks at f >= phi_c
 
-  bool breakable() const { return threshold < std::numeric_limits<double>::infinity(); }
+  std::vector<double> mass;        // m_j, bead j (1..N) at index j-1; empty: all 1
+  std::vector<double> stiffness;   // K_j, spring j (1..N) at index j-1; empty: all 1
+  std::vector<double> thresholds;  // phi_c,j, spring j at index j-1; empty: all `threshold`
+
+  // Some spring can break (a finite threshold somewhere).
+  bool breakable() const;
+  // Every m_j = K_j = 1: the paper's Eq. (dimless), whatever the thresholds.
+  bool uniform_dynamics() const { return mass.empty() && stiffness.empty(); }
+  // Every spring has the threshold `threshold`.
+  bool uniform_thresholds() const { return thresholds.empty(); }
+  double mass_of(int bead) const { return mass.empty() ? 1.0 : mass[bead - 1]; }  // 1..N
+  double stiffness_of(int spring) const {                                         // 1..N
+    return stiffness.empty() ? 1.0 : stiffness[spring - 1];
+  }
+  // phi_c,j of spring 1..N; spring 0 (the pull string) breaks at `threshold`.
+  double threshold_of(int spring) const {
+    return thresholds.empty() || spring == 0 ? threshold : thresholds[spring - 1];
+  }
+  // The smallest phi_c,j (what a slow pull breaks first); `threshold` for a uniform chain.
+  double min_threshold() const;
+  // Clears the arrays whose values are all the uniform ones (1 for mass and stiffness,
+  // `threshold` for thresholds).
+  void normalize();
 };
 
 struct BreakEvent {
