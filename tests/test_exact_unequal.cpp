@@ -13,10 +13,13 @@
 #include <string>
 #include <vector>
 
+#include "app/run_rows.h"
 #include "drive/drive.h"
 #include "exact/chain_modes.h"
 #include "exact/exact_chain.h"
 #include "exact/first_break.h"
+#include "overlay/modes.h"
+#include "scene/scene.h"
 
 namespace {
 
@@ -199,4 +202,59 @@ TEST_CASE("A weak link: the first break against the independently located one",
   CHECK(map[0].spring == expected["spring"].get<int>());
   // Eq. (rescale2): phi is linear in beta, so the unit ramp reaches zeta_c at the same tau.
   CHECK(std::abs(map[0].tau - expected["tau"].get<double>()) <= 1e-9);
+}
+
+TEST_CASE("continuum refuses a chain of unequal beads or springs", "[exact][unequal]") {
+  cb::SceneDesc scene;
+  scene.path = "heavy.toml";
+  scene.drive = ramp(0.1);
+  scene.integrator.t_end = 10.0;
+  cb::RunRequest request;
+  request.solver = "continuum";
+  CHECK_NOTHROW(cb::check_run_request(scene, request));  // the uniform chain: Eq. (sum)
+  scene.chain.mass.assign(30, 1.0);
+  scene.chain.mass[10] = 4.0;
+  try {
+    cb::check_run_request(scene, request);
+    FAIL("an unequal chain was accepted by the continuum solver");
+  } catch (const cb::SceneError& e) {
+    const std::string what = e.what();
+    INFO(what);
+    CHECK(what.find("heavy.toml") != std::string::npos);      // where
+    CHECK(what.find("uniform chain") != std::string::npos);   // what
+    CHECK(what.find("--solver exact") != std::string::npos);  // how to fix
+  }
+  request.solver = "exact";
+  CHECK_NOTHROW(cb::check_run_request(scene, request));
+}
+
+TEST_CASE("Mode bars of an unequal chain: the chain's own modes carry its energy",
+          "[overlay][unequal]") {
+  // With all N modes, sum_n A_n^2 / 2 = sum_j (m_j psi_j'^2 + K_j phi_j^2) / 2 for any state:
+  // true only if the shapes are mass-orthonormal eigenvectors of K with eigenvalues Omega_n^2.
+  const json ref = load("I0_unequal_N12_gamma0.json");
+  const cb::ChainParams chain = chain_from(ref);
+  const int n = chain.beads;
+  cb::ChainState state;
+  for (int j = 1; j <= n; ++j) {  // an arbitrary state
+    state.psi.push_back(std::sin(1.3 * j) + 0.1 * j);
+    state.vel.push_back(std::cos(0.7 * j * j));
+  }
+  double energy = 0.0;
+  for (int j = 1; j <= n; ++j)
+    energy += 0.5 * chain.mass_of(j) * state.vel[j - 1] * state.vel[j - 1] +
+              0.5 * chain.stiffness_of(j) * cb::extension(state, j) * cb::extension(state, j);
+  const cb::ModeBasis basis(chain, n);
+  std::vector<double> amplitude;
+  basis.amplitudes(state, amplitude);
+  REQUIRE(amplitude.size() == static_cast<std::size_t>(n));
+  double modal = 0.0;
+  for (double a : amplitude) modal += 0.5 * a * a;
+  INFO("energy " << energy << ", modal " << modal);
+  CHECK(std::abs(modal - energy) <= 1e-13 * energy);
+
+  // The sine basis is not this chain's: it gives another split (and another sum).
+  std::vector<double> sines;
+  cb::mode_amplitudes(state, n, sines);
+  CHECK(std::abs(sines[0] - amplitude[0]) > 1e-3 * amplitude[0]);
 }
