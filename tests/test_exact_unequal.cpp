@@ -301,3 +301,23 @@ TEST_CASE("run --solver exact: an unequal chain's energy is the drive's work", "
     CHECK(std::abs(rows.energy[i] * cube - work) <= 1e-9 * work);
   }
 }
+
+TEST_CASE("One heavy bead on a soft spring: a step's response in closed form", "[exact][unequal]") {
+  // N = 1, m = 4, K = 0.25, gamma = 0, f = 1 for tau > 0: psi = (1 - cos(Omega tau)) / K with
+  // Omega = sqrt(K / m) = 1/4 (the smallest LAPACK problem, against the textbook oscillator).
+  cb::ChainParams chain;
+  chain.beads = 1;
+  chain.mass = {4.0};
+  chain.stiffness = {0.25};
+  cb::DriveDesc step;
+  step.type = cb::DriveType::Step;
+  step.amplitude = 1.0;
+  const cb::ExactChain exact(chain, step);
+  CHECK(std::abs(exact.frequency(0) - 0.25) <= 1e-15);
+  for (double tau : {0.3, 2.0, 11.0, 40.0}) {
+    const double expected = (1.0 - std::cos(0.25 * tau)) / 0.25;
+    INFO("tau " << tau);
+    CHECK(std::abs(exact.psi(1, tau) - expected) <= 1e-13 * (1.0 + expected));
+    CHECK(std::abs(exact.phi(1, tau) - expected) <= 1e-13 * (1.0 + expected));
+  }
+}

@@ -11,7 +11,8 @@
 // sines: Omega_n^2 its eigenvalues, psi_j = sum_n s_n[j] s_n[N] x_n with s_n = M^{-1/2} v_n,
 // and the same closed-form x_n. The uniform chain keeps its closed-form modes (and its bits).
 //
-// Cost: the constructor tabulates c_n sin(k_n j) and the spring weights, 16 N^2 bytes;
+// Cost: the constructor tabulates c_n sin(k_n j) and the spring weights, 16 N^2 bytes (an
+// unequal chain's also runs LAPACK: 0.3 s at N = 1000, 6 s at N = 4000 on a loaded 2-core machine);
 // a whole-chain call is O(N^2) with each x_n evaluated once; a one-bead call is O(N).
 // An Expr drive costs O(N (tau - t0) / 0.25) per call and is accurate to ~1e-12 relative when
 // f is smooth on the scale of one time unit (8-point Gauss-Legendre on panels <= 0.25).
