@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 // Reference LAPACK (liblapack-dev) through its Fortran symbol; gfortran passes the lengths of
 // character arguments as trailing hidden size_t arguments.
@@ -57,15 +58,16 @@ ChainModes chain_modes(const ChainParams& chain, int count) {
   modes.beads = n;
   modes.count = count;
   modes.omega2.assign(w.begin(), w.begin() + count);
-  modes.shape.resize(size * static_cast<std::size_t>(count));
+  // Z holds v_n as column n (leading dimension N): the layout of `shape`, so s_n = M^{-1/2} v_n
+  // is made in place (no second N x count copy).
   for (int m = 0; m < count; ++m) {
-    const double* v = &z[static_cast<std::size_t>(m) * size];
-    double* s = &modes.shape[static_cast<std::size_t>(m) * size];
+    double* s = &z[static_cast<std::size_t>(m) * size];
     // The sign of an eigenvector is arbitrary and the solution (products s_n[j] s_n[N]) does
     // not depend on it; s_n[N] >= 0 makes the tables the same whatever LAPACK returns.
-    const double sign = v[n - 1] < 0.0 ? -1.0 : 1.0;
-    for (int j = 0; j < n; ++j) s[j] = sign * v[j] / root_mass[j];
+    const double sign = s[n - 1] < 0.0 ? -1.0 : 1.0;
+    for (int j = 0; j < n; ++j) s[j] = sign * s[j] / root_mass[j];
   }
+  modes.shape = std::move(z);
   modes.omega2_error =
       4.0 * std::sqrt(static_cast<double>(n)) * std::numeric_limits<double>::epsilon() * norm;
   modes.min_gap = std::numeric_limits<double>::infinity();
