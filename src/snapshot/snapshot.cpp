@@ -145,9 +145,12 @@ void add_wall(Layer& layer, const SnapshotLayout& l, const PanelLayout& p, const
       Segment{l.x_wall, static_cast<float>(y0), l.x_wall, static_cast<float>(y1), 2.0f, pal.wall_face});
 }
 
-// Springs with thresholds of their own are coloured by phi_j / phi_c,j.
+// Springs with thresholds of their own are coloured by phi_j / phi_c,j; an array of equal
+// thresholds is the uniform chain's colouring (and legend).
 bool per_spring_colours(const ChainParams& params) {
-  return !params.uniform_thresholds() && params.breakable();
+  const std::vector<double>& c = params.thresholds;
+  return params.breakable() &&
+         std::any_of(c.begin(), c.end(), [&](double v) { return v != c.front(); });
 }
 
 std::string format(const char* fmt, double value) {
