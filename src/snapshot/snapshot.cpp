@@ -86,10 +86,10 @@ PanelLayout panel_layout(View view, double top, double bottom, bool two_panels,
     r = std::min(r0, room / std::sqrt(sizes.max_area));
   }
   const double r_max = sizes.max_area > 1.0 ? r * std::sqrt(sizes.max_area) : r;
-  // Unequal stiffness likewise: the widest spring at most 2.4 median radii (a little more than
-  // a bead's diameter).
+  // Unequal stiffness likewise: the widest spring at most 2.2 median radii across (a little
+  // more than a bead's diameter; wider, a short stiff coil reads as a block).
   double spring_width = 1.4 * r;
-  if (sizes.max_width > 1.0) spring_width = std::min(spring_width, 2.4 * r / sizes.max_width);
+  if (sizes.max_width > 1.0) spring_width = std::min(spring_width, 2.2 * r / sizes.max_width);
   // A coil needs room between the beads to read as one; short springs are bars.
   const double free_length = spacing - 2.0 * r;
   p.spacing = static_cast<float>(spacing);
@@ -182,9 +182,9 @@ void add_legend(Layer& layer, const SnapshotLayout& l, const SnapshotStyle& styl
   const double scale = phi_c ? style.threshold : style.strain_range;
   std::string ticks[3] = {(phi_c ? "−φ_c = " : "φ = ") + minus(format("%.3g", -scale)), "0",
                           (phi_c ? "+φ_c = " : "φ = +") + format("%.3g", scale)};
-  if (per_spring) {
-    ticks[0] = "φ_j/φ_{c,j} = \u22121";
-    ticks[2] = "φ_j/φ_{c,j} = +1";
+  if (per_spring) {  // each spring's own threshold: phi_j / phi_c,j = -1, 0, +1
+    ticks[0] = "\u2212φ_{c,j}";
+    ticks[2] = "+φ_{c,j}";
   }
   const float tick_y = l.legend_y + l.legend_h;
   const float label_y = tick_y + 0.6f * ts;

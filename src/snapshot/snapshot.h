@@ -193,7 +193,7 @@ Color strain_color(double s);  // the dark theme's
 // that every bead and spring stays readable. Empty for a uniform mass or stiffness (every
 // ratio 1), so the paper's chain is drawn exactly as before.
 inline constexpr double kBeadAreaRange = 4.0;     // areas from 1/4 to 4 x the median bead's
-inline constexpr double kSpringWidthRange = 3.0;  // widths from 1/3 to 3 x the median spring's
+inline constexpr double kSpringWidthRange = 2.0;  // widths from 1/2 to 2 x the median spring's
 std::vector<double> bead_area_ratios(const ChainParams& params);     // bead j at j-1
 std::vector<double> spring_width_ratios(const ChainParams& params);  // spring j at j-1
 
