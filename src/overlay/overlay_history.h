@@ -62,6 +62,7 @@ class OverlayHistory {
 
   ChainParams params_;
   OverlaySetup setup_;
+  bool per_spring_ = false;  // the space-time picture shows phi_j / phi_c,j (strain_scale.h)
   OverlayData data_;
   std::unique_ptr<ExactChain> exact_;
   std::int64_t next_frame_ = 0;

@@ -13,6 +13,7 @@
 #include <limits>
 
 #include "snapshot/snapshot_internal.h"
+#include "snapshot/strain_scale.h"
 #include "text/font.h"
 
 namespace cb {
@@ -143,14 +144,6 @@ void add_wall(Layer& layer, const SnapshotLayout& l, const PanelLayout& p, const
   }
   layer.segments.push_back(
       Segment{l.x_wall, static_cast<float>(y0), l.x_wall, static_cast<float>(y1), 2.0f, pal.wall_face});
-}
-
-// Springs with thresholds of their own are coloured by phi_j / phi_c,j; an array of equal
-// thresholds is the uniform chain's colouring (and legend).
-bool per_spring_colours(const ChainParams& params) {
-  const std::vector<double>& c = params.thresholds;
-  return params.breakable() &&
-         std::any_of(c.begin(), c.end(), [&](double v) { return v != c.front(); });
 }
 
 std::string format(const char* fmt, double value) {
@@ -375,14 +368,10 @@ RenderSnapshot build_snapshot(const ChainState& state, const ChainParams& params
   Frame frame{state, params, style, out.layout, pal, force, 1.0, true,
               std::move(areas), std::move(widths), {}, out.breaks_shown, out};
   frame.strain_scale = style.threshold > 0 ? style.threshold : style.strain_range;
-  if (per_spring_colours(params)) {
-    // phi_j / phi_c,j: how close each spring is to its own threshold. A spring that cannot
-    // break (phi_c,j = inf) keeps the frame's scale.
+  if (strain_per_spring(params)) {  // phi_j / phi_c,j (snapshot/strain_scale.h)
     frame.spring_scale.resize(static_cast<std::size_t>(params.beads));
-    for (int j = 1; j <= params.beads; ++j) {
-      const double c = std::abs(params.threshold_of(j));
-      frame.spring_scale[j - 1] = std::isfinite(c) && c > 0.0 ? c : frame.strain_scale;
-    }
+    for (int j = 1; j <= params.beads; ++j)
+      frame.spring_scale[j - 1] = spring_strain_scale(params, j, frame.strain_scale);
   }
   std::stable_sort(frame.breaks_by_spring.begin(), frame.breaks_by_spring.end(),
                    [](const BreakEvent& a, const BreakEvent& b) { return a.spring < b.spring; });
@@ -404,7 +393,7 @@ RenderSnapshot build_snapshot(const ChainState& state, const ChainParams& params
       back.labels.push_back(Label{caption, l.margin, p.top, l.font_px, pal.dim_text});
     }
   }
-  add_legend(back, l, style, per_spring_colours(params), pal);
+  add_legend(back, l, style, strain_per_spring(params), pal);
   if (l.zoomed()) add_overview(back, l, params.beads, pal);
   if (!style.caption.empty()) {
     const float w = text_width(style.caption, l.font_px);
