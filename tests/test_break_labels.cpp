@@ -17,7 +17,9 @@
 
 namespace {
 
-bool open_overlap(double a0, double a1, double b0, double b1) { return a0 < b1 && b0 < a1; }
+bool open_overlap(double a0, double a1, double b0, double b1) {
+  return a0 < b1 && b0 < a1;
+}
 
 // Box a, widened by `gap` left and right, and box b share interior points.
 bool boxes_overlap(const cb::LabelBox& a, const cb::LabelBox& b, double gap) {
@@ -45,8 +47,12 @@ cb::LabelArea area_of(int rows, double x_max) {
   return a;
 }
 
-double more_width(int k) { return 60.0 + 8.0 * std::to_string(k).size(); }
-double suffix_width(int k) { return 70.0 + 8.0 * std::to_string(k).size(); }
+double more_width(int k) {
+  return 60.0 + 8.0 * std::to_string(k).size();
+}
+double suffix_width(int k) {
+  return 70.0 + 8.0 * std::to_string(k).size();
+}
 
 // Every property the placement promises, for any input.
 void check_plan(const std::vector<cb::LabelRequest>& requests, const cb::LabelArea& a,
@@ -84,7 +90,8 @@ void check_plan(const std::vector<cb::LabelRequest>& requests, const cb::LabelAr
       INFO("against label " << k << " (request " << q.request << ") row " << q.row << " at "
                             << q.box.x << " size " << q.box.w);
       CHECK_FALSE(boxes_overlap(p.box, q.box, a.gap - 1e-9));
-      if (p.has_leader) CHECK_FALSE(leader_hits(p.leader_x, p.leader_y0, p.leader_y1, q.box, a.gap - 1e-9));
+      if (p.has_leader)
+        CHECK_FALSE(leader_hits(p.leader_x, p.leader_y0, p.leader_y1, q.box, a.gap - 1e-9));
     }
   }
   // Every request is labelled once or counted.
@@ -130,7 +137,8 @@ TEST_CASE("A cascade forms a staircase: each leader drops left of the labels abo
   const cb::LabelArea a = area_of(8, 1000);
   // The first break at the pulled end (x = 900), then three breaks near the wall, 40 px apart
   // (labels 150 px wide cannot share a row).
-  const std::vector<cb::LabelRequest> r{{900, 80, 150}, {100, 80, 150}, {140, 80, 150}, {180, 80, 150}};
+  const std::vector<cb::LabelRequest> r{
+      {900, 80, 150}, {100, 80, 150}, {140, 80, 150}, {180, 80, 150}};
   const cb::LabelPlan plan = cb::place_labels(r, a, more_width, suffix_width);
   check_plan(r, a, plan);
   REQUIRE(plan.labels.size() == 4);
@@ -174,7 +182,8 @@ TEST_CASE("Breaks that do not fit are counted; the first break's label never giv
   CHECK(plan.labels.back().request == -1);
 }
 
-TEST_CASE("Random cascades: no two labels or a label and a leader ever meet", "[snapshot][labels]") {
+TEST_CASE("Random cascades: no two labels or a label and a leader ever meet",
+          "[snapshot][labels]") {
   std::mt19937 rng(20261125);  // fixed: the same 2000 cases on every machine
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   int dropped = 0, placed = 0;
@@ -187,7 +196,8 @@ TEST_CASE("Random cascades: no two labels or a label and a leader ever meet", "[
     const bool clustered = unit(rng) < 0.5;  // a cascade: anchors in a narrow band
     const double band_x = a.x_min + unit(rng) * (width - a.x_min);
     for (int i = 0; i < n; ++i) {
-      const double x = clustered ? std::min(width, band_x + unit(rng) * 120) : a.x_min + unit(rng) * (width - a.x_min);
+      const double x = clustered ? std::min(width, band_x + unit(rng) * 120)
+                                 : a.x_min + unit(rng) * (width - a.x_min);
       // Widths up to wider than the whole area (a tiny frame).
       r.push_back({x, 60 + unit(rng) * 30, 40 + unit(rng) * (trial % 7 == 0 ? 2.0 * width : 260)});
     }
@@ -229,7 +239,8 @@ cb::ChainState cascade_state(int beads, const std::vector<cb::BreakEvent>& break
 
 // The snapshot's break labels against each other and against the drawn leaders; the first
 // break's label present, bold, in the text colour, its pointer in the accent colour.
-void check_snapshot_labels(const cb::RenderSnapshot& snap, const cb::ChainState& state, cb::ThemeName theme) {
+void check_snapshot_labels(const cb::RenderSnapshot& snap, const cb::ChainState& state,
+                           cb::ThemeName theme) {
   const auto& shown = snap.breaks_shown;
   REQUIRE_FALSE(shown.empty());
   const cb::BreakEvent* first = &shown.front();
@@ -262,7 +273,8 @@ void check_snapshot_labels(const cb::RenderSnapshot& snap, const cb::ChainState&
     CHECK(l.color.r == t.text.r / 255.0f);
     CHECK(l.color.g == t.text.g / 255.0f);
     CHECK(l.x == static_cast<float>(snap.break_labels.front().box.x));
-    CHECK(cb::text_width(l.text, l.size, l.face) == Approx(snap.break_labels.front().box.w).margin(1e-3));
+    CHECK(cb::text_width(l.text, l.size, l.face) ==
+          Approx(snap.break_labels.front().box.w).margin(1e-3));
   }
   CHECK(bold == 1);
   // Every vertical segment of the marks (the leaders) misses every label box but its own.
@@ -290,10 +302,12 @@ TEST_CASE("Snapshots of a cascade: labels apart, the first break in bold over an
                                     {7, 55.81, 0},  {8, 55.82, 0},  {12, 55.84, 0}, {16, 55.85, 0},
                                     {17, 55.86, 0}, {22, 55.93, 0}, {4, 58.88, 0}};
   std::vector<cb::BreakEvent> many;
-  for (int k = 0; k < 400; ++k) many.push_back({1 + (k * 7919) % 2000, 10.0 + 0.001 * ((k * 31) % 400), 0});
+  for (int k = 0; k < 400; ++k)
+    many.push_back({1 + (k * 7919) % 2000, 10.0 + 0.001 * ((k * 31) % 400), 0});
   std::sort(many.begin(), many.end(), [](auto& a, auto& b) { return a.spring < b.spring; });
-  many.erase(std::unique(many.begin(), many.end(), [](auto& a, auto& b) { return a.spring == b.spring; }),
-             many.end());
+  many.erase(
+      std::unique(many.begin(), many.end(), [](auto& a, auto& b) { return a.spring == b.spring; }),
+      many.end());
   struct Case {
     int beads;
     const std::vector<cb::BreakEvent>* breaks;

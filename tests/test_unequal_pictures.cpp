@@ -113,7 +113,8 @@ TEST_CASE("Bead areas follow masses, spring widths stiffness, colours phi_j / ph
   for (int j = 1; j <= 7; ++j) {
     INFO("bead " << j);
     // Area ratio = (r_j / r_median)^2, up to the radius' float rounding.
-    CHECK(double(beads[j - 1].radius) * beads[j - 1].radius / (r * r) == Approx(area[j - 1]).epsilon(1e-6));
+    CHECK(double(beads[j - 1].radius) * beads[j - 1].radius / (r * r) ==
+          Approx(area[j - 1]).epsilon(1e-6));
   }
   // The heaviest bead (area 4) is twice the median's radius, and fits in 45% of the spacing.
   CHECK(panel.largest_bead_radius == Approx(2.0 * r).epsilon(1e-6));
@@ -131,8 +132,7 @@ TEST_CASE("Bead areas follow masses, spring widths stiffness, colours phi_j / ph
   CHECK(2.0 * panel.spring_width <= 2.2 * r + 1e-3);
   // The colour bar says what the colours mean.
   bool legend = false;
-  for (const cb::Label& l : snap.layers[cb::kLayerFrame].labels)
-    legend |= l.text == "+φ_{c,j}";
+  for (const cb::Label& l : snap.layers[cb::kLayerFrame].labels) legend |= l.text == "+φ_{c,j}";
   CHECK(legend);
 }
 
@@ -160,7 +160,8 @@ TEST_CASE("The uniform chain written with arrays of ones draws exactly as withou
       style.width = width;
       style.threshold = 1.5;
       style.psi_range = 3.0;
-      check_identical(cb::build_snapshot(s, uniform, 0.7, style), cb::build_snapshot(s, ones, 0.7, style));
+      check_identical(cb::build_snapshot(s, uniform, 0.7, style),
+                      cb::build_snapshot(s, ones, 0.7, style));
     }
   }
 }
@@ -229,7 +230,8 @@ TEST_CASE("A bead four times the median mass inks four times the pixels", "[rend
         const std::uint8_t* px = image.pixel(x, y);
         const float bg[3] = {snap.background.r, snap.background.g, snap.background.b};
         bool ink = false;
-        for (int k = 0; k < 3; ++k) ink |= std::abs(int(px[k]) - int(std::lround(bg[k] * 255.0f))) >= 8;
+        for (int k = 0; k < 3; ++k)
+          ink |= std::abs(int(px[k]) - int(std::lround(bg[k] * 255.0f))) >= 8;
         count += ink;
       }
     return count;

@@ -192,8 +192,9 @@ void OverlayHistory::record_spacetime(const ChainState& state) {
       if (next < broken.size() && broken[next] == j) continue;
       // Springs with thresholds of their own: the largest phi_j / phi_c,j wins, as in the
       // chain panel (snapshot/strain_scale.h).
-      const double phi = per_spring_ ? extension(state, j) / spring_strain_scale(params_, j, d.strain_scale)
-                                     : extension(state, j);
+      const double phi = per_spring_
+                             ? extension(state, j) / spring_strain_scale(params_, j, d.strain_scale)
+                             : extension(state, j);
       if (std::isnan(best) || std::abs(phi) > std::abs(best)) best = phi;
     }
     d.spacetime.push_back(static_cast<float>(per_spring_ ? best : best / d.strain_scale));

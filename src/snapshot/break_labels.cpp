@@ -84,9 +84,8 @@ bool lay_out(const std::vector<LabelRequest>& requests, const std::vector<int>& 
              const LabelArea& a, int first_row, std::vector<PlacedLabel>& out) {
   out.assign(1, first_label(a, requests[0], requests[0].width, first_row));
   std::vector<int> order = chosen;
-  std::stable_sort(order.begin(), order.end(), [&](int x, int y) {
-    return requests[x].anchor_x > requests[y].anchor_x;
-  });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int x, int y) { return requests[x].anchor_x > requests[y].anchor_x; });
   const std::vector<int> rows = all_rows(a);
   for (const int i : order) {
     PlacedLabel p;
@@ -161,10 +160,9 @@ LabelPlan place_labels(const std::vector<LabelRequest>& requests, const LabelAre
       return plan;
     }
     if (plan.labels.size() == 1) break;
-    const auto latest = std::max_element(plan.labels.begin() + 1, plan.labels.end(),
-                                         [](const PlacedLabel& x, const PlacedLabel& y) {
-                                           return x.request < y.request;
-                                         });
+    const auto latest = std::max_element(
+        plan.labels.begin() + 1, plan.labels.end(),
+        [](const PlacedLabel& x, const PlacedLabel& y) { return x.request < y.request; });
     plan.labels.erase(latest);
     ++plan.dropped;
   }

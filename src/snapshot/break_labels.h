@@ -44,19 +44,19 @@ struct LabelRequest {
 
 // The rows under a chain panel where labels may go, and the label's proportions.
 struct LabelArea {
-  double first_row_y = 0;  // top of the capitals of row 0
-  double row_h = 1;        // from one row to the next (>= box_h, or rows would touch)
-  int rows = 1;            // >= 1
-  double box_above = 0;    // from the top of the capitals up to the box's top (ascent - cap)
-  double box_h = 1;        // the line's height (ascent - descent = the font's pixel size)
-  double leader_end = 0;   // the leader line ends this far below the top of the capitals
+  double first_row_y = 0;       // top of the capitals of row 0
+  double row_h = 1;             // from one row to the next (>= box_h, or rows would touch)
+  int rows = 1;                 // >= 1
+  double box_above = 0;         // from the top of the capitals up to the box's top (ascent - cap)
+  double box_h = 1;             // the line's height (ascent - descent = the font's pixel size)
+  double leader_end = 0;        // the leader line ends this far below the top of the capitals
   double x_min = 0, x_max = 1;  // boxes stay inside (unless a label is wider than this)
   double offset = 0;            // the text starts this far right of its leader (or ends left)
   double gap = 0;               // the clear space kept left and right of every box
 };
 
 struct PlacedLabel {
-  int request = -1;     // index into the requests; -1 for the "+k more" label
+  int request = -1;  // index into the requests; -1 for the "+k more" label
   int row = 0;
   double x = 0, y = 0;  // the text's left edge and the top of its capitals (cb::Label)
   LabelBox box;

@@ -110,9 +110,9 @@ void draw_beads_and_springs(Frame& frame, const PanelLayout& p, const Placer& at
     const double ra = j == 1 ? 0.0 : bead_radius(frame, p, j - 1), rb = bead_radius(frame, p, j);
     const double ia = d > 0.0 ? std::min(ra, 0.25 * d) / d : 0.0;
     const double ib = d > 0.0 ? std::min(rb, 0.25 * d) / d : 0.0;
-    chain.springs.push_back(SpringInstance{f(a.x + ia * dx), f(a.y + ia * dy), f(b.x - ib * dx),
-                                           f(b.y - ib * dy), width, p.coils,
-                                           strain_color(phi / frame.strain_scale_of(j), frame.style.theme)});
+    chain.springs.push_back(SpringInstance{
+        f(a.x + ia * dx), f(a.y + ia * dy), f(b.x - ib * dx), f(b.y - ib * dy), width, p.coils,
+        strain_color(phi / frame.strain_scale_of(j), frame.style.theme)});
   });
   for (int j = 1; j <= frame.params.beads; ++j) {
     const Point c = at.at(j);
@@ -350,8 +350,9 @@ void place_break_labels(Frame& frame, const PanelLayout& p, int first, double be
     const bool is_first = i == 0;
     const Point a = anchor_of(b);
     texts.push_back(break_text(b, is_first));
-    requests.push_back(LabelRequest{a.x, a.y + below,
-                                    text_width(texts.back(), l.font_px, is_first ? FontFace::Bold : FontFace::Sans)});
+    requests.push_back(LabelRequest{
+        a.x, a.y + below,
+        text_width(texts.back(), l.font_px, is_first ? FontFace::Bold : FontFace::Sans)});
   }
 
   // A label's box: from the top of the tallest glyph to the bottom of the deepest descender,
@@ -374,11 +375,16 @@ void place_break_labels(Frame& frame, const PanelLayout& p, int first, double be
   area.x_max = W - l.margin;
   area.offset = 0.5 * ts;
   area.gap = 0.4 * ts;
-  const auto more_text = [](int k) { return format_count(k == 1 ? "+%d more break" : "+%d more breaks", k); };
+  const auto more_text = [](int k) {
+    return format_count(k == 1 ? "+%d more break" : "+%d more breaks", k);
+  };
   const auto suffix_text = [](int k) { return format_count(" (+%d more)", k); };
   const LabelPlan plan = place_labels(
-      requests, area, [&](int k) { return static_cast<double>(text_width(more_text(k), l.font_px)); },
-      [&](int k) { return static_cast<double>(text_width(suffix_text(k), l.font_px, FontFace::Bold)); });
+      requests, area,
+      [&](int k) { return static_cast<double>(text_width(more_text(k), l.font_px)); },
+      [&](int k) {
+        return static_cast<double>(text_width(suffix_text(k), l.font_px, FontFace::Bold));
+      });
 
   frame.out.breaks_unlabelled = plan.dropped;
   for (const PlacedLabel& placed : plan.labels) {
@@ -468,9 +474,9 @@ void draw_breaks(Frame& frame, const PanelLayout& p, const Placer& at) {
   int first = 0;  // the earliest break; of equal times, the one recorded first
   for (int k = 1; k < static_cast<int>(breaks.size()); ++k)
     if (breaks[k].tau < breaks[first].tau) first = k;
-  const double clear =
-      std::max(static_cast<double>(p.largest_bead_radius), frame.out.ribbon ? 0.5 * p.ribbon_width : 0.0) +
-      2.0;
+  const double clear = std::max(static_cast<double>(p.largest_bead_radius),
+                                frame.out.ribbon ? 0.5 * p.ribbon_width : 0.0) +
+                       2.0;
   const double tri_h = 0.6 * ts, tri_w = 0.35 * ts;
   const auto anchor_of = [&](const BreakEvent& b) {
     Point a = break_anchor(frame, p, at, b.spring);

@@ -215,19 +215,22 @@ void add_overview(Layer& layer, const SnapshotLayout& l, int beads, const Palett
 }  // namespace
 
 SnapshotLayout snapshot_layout(const SnapshotStyle& style, const ChainParams& params) {
-  return layout_for(style, params, size_range(bead_area_ratios(params), spring_width_ratios(params)));
+  return layout_for(style, params,
+                    size_range(bead_area_ratios(params), spring_width_ratios(params)));
 }
 
 namespace snapshot_detail {
 
-SizeRange size_range(const std::vector<double>& area_ratios, const std::vector<double>& width_ratios) {
+SizeRange size_range(const std::vector<double>& area_ratios,
+                     const std::vector<double>& width_ratios) {
   SizeRange r;
   for (double a : area_ratios) r.max_area = std::max(r.max_area, a);
   for (double w : width_ratios) r.max_width = std::max(r.max_width, w);
   return r;
 }
 
-SnapshotLayout layout_for(const SnapshotStyle& style, const ChainParams& params, const SizeRange& sizes) {
+SnapshotLayout layout_for(const SnapshotStyle& style, const ChainParams& params,
+                          const SizeRange& sizes) {
   assert(style.width > 0 && style.height > 0 && "frame size must be positive");
   assert(params.beads >= 1 && "a chain needs at least one bead");
   assert(style.psi_range > 0 && "psi_range sets the scale and must be positive");
@@ -278,8 +281,10 @@ SnapshotLayout layout_for(const SnapshotStyle& style, const ChainParams& params,
   if (style.view == View::Both) {
     const double gap = ts;
     const double h = std::max(1.0, 0.5 * (bottom - top - gap));
-    l.panels[0] = panel_layout(View::Longitudinal, top, top + h, true, l, style, params.beads, sizes);
-    l.panels[1] = panel_layout(View::Transverse, bottom - h, bottom, true, l, style, params.beads, sizes);
+    l.panels[0] =
+        panel_layout(View::Longitudinal, top, top + h, true, l, style, params.beads, sizes);
+    l.panels[1] =
+        panel_layout(View::Transverse, bottom - h, bottom, true, l, style, params.beads, sizes);
     l.panel_count = 2;
   } else {
     l.panels[0] = panel_layout(style.view, top, bottom, false, l, style, params.beads, sizes);
@@ -365,8 +370,19 @@ RenderSnapshot build_snapshot(const ChainState& state, const ChainParams& params
     if (b.tau <= state.tau) out.breaks_shown.push_back(b);
   }
 
-  Frame frame{state, params, style, out.layout, pal, force, 1.0, true,
-              std::move(areas), std::move(widths), {}, out.breaks_shown, out};
+  Frame frame{state,
+              params,
+              style,
+              out.layout,
+              pal,
+              force,
+              1.0,
+              true,
+              std::move(areas),
+              std::move(widths),
+              {},
+              out.breaks_shown,
+              out};
   frame.strain_scale = style.threshold > 0 ? style.threshold : style.strain_range;
   if (strain_per_spring(params)) {  // phi_j / phi_c,j (snapshot/strain_scale.h)
     frame.spring_scale.resize(static_cast<std::size_t>(params.beads));

@@ -96,7 +96,7 @@ struct PanelLayout {
   float half_height = 0;           // transverse: pixels from the rest line to |psi| = psi_range
   float spacing = 0;               // pixels per unit of rest length
   float psi_scale = 0;             // pixels per unit of psi (longitudinal: = spacing)
-  float bead_radius = 0;   // a bead of the median mass (bead j: bead_radius * sqrt(area ratio))
+  float bead_radius = 0;  // a bead of the median mass (bead j: bead_radius * sqrt(area ratio))
   float largest_bead_radius = 0;  // the heaviest bead's (bead_radius for equal masses)
   float spring_width = 0;  // SpringInstance::width of an intact spring of the median stiffness
   float coils = 0;         // SpringInstance::coils of an intact spring (0: bars)

@@ -29,9 +29,11 @@ inline constexpr double kFlashTime = 1.5;   // the flash fades out
 struct SizeRange {
   double max_area = 1.0, max_width = 1.0;
 };
-SizeRange size_range(const std::vector<double>& area_ratios, const std::vector<double>& width_ratios);
+SizeRange size_range(const std::vector<double>& area_ratios,
+                     const std::vector<double>& width_ratios);
 // snapshot_layout() with the ratios' range already known.
-SnapshotLayout layout_for(const SnapshotStyle& style, const ChainParams& params, const SizeRange& sizes);
+SnapshotLayout layout_for(const SnapshotStyle& style, const ChainParams& params,
+                          const SizeRange& sizes);
 
 struct Point {
   double x = 0, y = 0;
