@@ -96,14 +96,14 @@ bool lay_out(const std::vector<LabelRequest>& requests, const std::vector<int>& 
 }
 
 // The "+k more" label: no leader; tried at the area's left edge, a little right of every
-// placed box (three gaps: close enough to read as one would be taken for part of it) and
+// placed box (two gaps: close enough to read as one would be taken for part of it) and
 // leader, and at the right edge, row by row.
 bool place_more(const LabelArea& a, double width, const std::vector<PlacedLabel>& placed,
                 PlacedLabel& out) {
   constexpr double kClear = 1e-6;  // (right + gap) - gap may round below right
   std::vector<double> xs{a.x_min};
   for (const PlacedLabel& p : placed) {
-    xs.push_back(p.box.right() + 3.0 * a.gap + kClear);
+    xs.push_back(p.box.right() + 2.0 * a.gap + kClear);
     if (p.has_leader) xs.push_back(p.leader_x + a.gap + kClear);
   }
   xs.push_back(a.x_max - width);
@@ -129,17 +129,19 @@ LabelPlan place_labels(const std::vector<LabelRequest>& requests, const LabelAre
   // Which later breaks get a label goes by time (the requests' order): each joins when the
   // labels chosen so far and it still lay out. Only the first kCandidates are tried: more
   // labels than that never fit under a chain, and a cascade may hold thousands of breaks.
-  // The first label goes in the top row, or in the bottom one: at the right edge its text
-  // runs left over the cascade, and from the top row it would bar every leader under it.
-  constexpr int kCandidates = 48;
+  // The first label takes the highest row that labels the most breaks: from the top row its
+  // text would bar every leader under it (a first break at the right edge runs left over the
+  // cascade; one near the wall runs right over it), one row below the cascade's staircase
+  // bars none.
+  constexpr int kCandidates = 32;
   const int later = static_cast<int>(requests.size()) - 1;
+  const int possible = std::min(later, kCandidates);
   std::vector<PlacedLabel> trial;
   int best_row = 0;
   std::vector<int> best;
-  for (const int first_row : {0, area.rows - 1}) {
-    if (first_row == area.rows - 1 && area.rows == 1) break;
+  for (int first_row = 0; first_row < area.rows; ++first_row) {
     std::vector<int> chosen;
-    for (int i = 1; i <= later && i <= kCandidates; ++i) {
+    for (int i = 1; i <= possible; ++i) {
       chosen.push_back(i);
       if (!lay_out(requests, chosen, area, first_row, trial)) chosen.pop_back();
     }
@@ -147,6 +149,7 @@ LabelPlan place_labels(const std::vector<LabelRequest>& requests, const LabelAre
       best = chosen;
       best_row = first_row;
     }
+    if (static_cast<int>(best.size()) == possible) break;  // no row can do better
   }
   lay_out(requests, best, area, best_row, plan.labels);
   plan.dropped = later - static_cast<int>(best.size());

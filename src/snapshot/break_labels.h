@@ -8,9 +8,9 @@
 // is free when its box, grown sideways by `gap`, meets no placed box and no placed leader
 // line, and its own leader line (straight down from the pointer to the row) meets no placed
 // box. The requests come in priority order: the first break, then the later ones by time.
-// The first break's label is placed before any other, in the top row (or the bottom one, when
-// that labels more breaks: at the frame's right edge its text runs left over the cascade and
-// from the top row would bar every leader under it), so it is always there. Which later
+// The first break's label is placed before any other, so it is always there, in the highest
+// row that lets the most later breaks be labelled (from the top row its text would bar every
+// leader under it; below the cascade's staircase it bars none). Which later
 // breaks get a label goes by time: each joins when the labels chosen so far and it still lay
 // out. Where they go, by position: from the rightmost anchor leftwards, each right of its
 // leader in the first free row from the top, else left of it, so a cascade forms a staircase

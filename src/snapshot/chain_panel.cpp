@@ -374,7 +374,7 @@ void place_break_labels(Frame& frame, const PanelLayout& p, int first, double be
   area.x_min = l.margin;
   area.x_max = W - l.margin;
   area.offset = 0.5 * ts;
-  area.gap = 0.4 * ts;
+  area.gap = ts;  // two labels in a row read as two
   const auto more_text = [](int k) {
     return format_count(k == 1 ? "+%d more break" : "+%d more breaks", k);
   };
