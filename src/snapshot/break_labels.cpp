@@ -95,27 +95,30 @@ bool lay_out(const std::vector<LabelRequest>& requests, const std::vector<int>& 
   return true;
 }
 
-// The "+k more" label: no leader; tried at the area's left edge, a little right of every
-// placed box (two gaps: close enough to read as one would be taken for part of it) and
-// leader, and at the right edge, row by row.
+// The "+k more" label: no leader. First at the area's left edge in any row (under the
+// staircase, where the old fixed rows put it), then row by row a little right of every
+// placed box (two gaps: any closer it would read as part of that label) and leader, and at
+// the right edge.
 bool place_more(const LabelArea& a, double width, const std::vector<PlacedLabel>& placed,
                 PlacedLabel& out) {
   constexpr double kClear = 1e-6;  // (right + gap) - gap may round below right
-  std::vector<double> xs{a.x_min};
+  const auto try_at = [&](int row, double x) {
+    const PlacedLabel s = slot(a, -1, row, x, width, false, 0.0, 0.0);
+    if (!is_free(s, placed, a.gap)) return false;
+    out = s;
+    return true;
+  };
+  for (int row = 0; row < a.rows; ++row)
+    if (try_at(row, a.x_min)) return true;
+  std::vector<double> xs;
   for (const PlacedLabel& p : placed) {
     xs.push_back(p.box.right() + 2.0 * a.gap + kClear);
     if (p.has_leader) xs.push_back(p.leader_x + a.gap + kClear);
   }
   xs.push_back(a.x_max - width);
-  for (int row = 0; row < a.rows; ++row) {
-    for (const double x : xs) {
-      const PlacedLabel s = slot(a, -1, row, x, width, false, 0.0, 0.0);
-      if (is_free(s, placed, a.gap)) {
-        out = s;
-        return true;
-      }
-    }
-  }
+  for (int row = 0; row < a.rows; ++row)
+    for (const double x : xs)
+      if (try_at(row, x)) return true;
   return false;
 }
 
