@@ -63,6 +63,7 @@ class OverlayHistory {
 
   ChainParams params_;
   OverlaySetup setup_;
+  bool per_spring_ = false;  // the space-time picture shows phi_j / phi_c,j (strain_scale.h)
   OverlayData data_;
   std::unique_ptr<ExactChain> exact_;
   ModeBasis modes_;  // the chain's own modes for the bars

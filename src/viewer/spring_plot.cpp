@@ -49,8 +49,8 @@ void SpringPlot::draw(const Session& session, int spring) {
   if (spring < 1 || spring > session.scene().chain.beads || h.rows() == 0) return;
   update_exact(session, spring);
 
-  const double phi_c = session.scene().chain.threshold;
-  const bool breakable = session.scene().chain.breakable();
+  const double phi_c = session.scene().chain.threshold_of(spring);  // this spring's own
+  const bool breakable = std::isfinite(phi_c);
   float lo = 0.0f, hi = 0.0f;
   for (std::size_t r = 0; r < h.rows(); ++r)
     if (std::isfinite(h.phi(spring, r))) {
