@@ -8,9 +8,9 @@
 #include "app/csv.h"
 #include "output/output_file.h"
 #include "output/video_encoder.h"
+#include "scene/scene_hash.h"
 #include "physics/simd.h"
 #include "resources/resources.h"
-#include "scene/scene_hash.h"
 
 namespace cb {
 
@@ -121,9 +121,8 @@ RenderPlan plan_render(const SceneDesc& scene, const RenderOptions& o) {
   if (o.slowmo >= 0) slow.factor = o.slowmo;
   if (o.slowmo_window > 0) slow.window = o.slowmo_window;
   if (!(slow.factor > 0.0 && slow.factor <= 1.0))
-    throw SceneError(
-        "--slowmo " + number_text(slow.factor) +
-        ": expected a factor between 0 and 1, e.g. --slowmo 0.1 (a tenth of the speed)");
+    throw SceneError("--slowmo " + number_text(slow.factor) +
+                     ": expected a factor between 0 and 1, e.g. --slowmo 0.1 (a tenth of the speed)");
   p.frame.slowmo = slow.factor;
   p.frame.slowmo_window = slow.window;
   require_frame_budget(scene, p, p.frame.speed / p.frame.fps);
@@ -137,9 +136,9 @@ RenderPlan plan_render(const SceneDesc& scene, const RenderOptions& o) {
 
 void measure_plan(const SceneDesc& scene, RenderPlan& p) {
   // With the overlay the pre-pass also samples, at the frame times, the plots' extremes.
-  p.extent =
-      measure_run(scene, scene.integrator.t_end, p.grid.dt(),
-                  p.overlay_layout.enabled ? p.grid.substeps() : 0, p.grid.slow_motion().on());
+  p.extent = measure_run(scene, scene.integrator.t_end, p.grid.dt(),
+                         p.overlay_layout.enabled ? p.grid.substeps() : 0,
+                         p.grid.slow_motion().on());
   std::vector<double> breaks;
   for (const BreakEvent& b : p.extent.breaks) breaks.push_back(b.tau);
   p.grid.lay_out(p.extent.tau_stop, breaks);
@@ -178,8 +177,8 @@ std::string plan_json(const SceneDesc& scene, const RenderPlan& p, const std::st
        ",\"pull_string\":" + (c.pull_string ? "true" : "false") + "}";
   j += ",\"drive\":" + drive_json(scene.drive);
   j += ",\"integrator\":{\"dt\":" + number_text(scene.integrator.dt) +
-       ",\"dt_used\":" + number_text(p.grid.dt()) +
-       ",\"t_end\":" + number_text(scene.integrator.t_end) + ",\"after_break\":" +
+       ",\"dt_used\":" + number_text(p.grid.dt()) + ",\"t_end\":" + number_text(scene.integrator.t_end) +
+       ",\"after_break\":" +
        (scene.integrator.after_break ? number_text(*scene.integrator.after_break)
                                      : std::string("null")) +
        "}";
@@ -195,10 +194,11 @@ std::string plan_json(const SceneDesc& scene, const RenderPlan& p, const std::st
   j += ",\"title_card_frames\":" + std::to_string(p.title_frames);
   j += ",\"tau_per_second\":" + number_text(p.frame.speed) +
        ",\"tau_end\":" + number_text(p.grid.tau(p.grid.frames() - 1));
-  j += ",\"slowmo\":" + (p.grid.slow_motion().on()
-                             ? "{\"factor\":" + number_text(p.grid.slow_motion().factor) +
-                                   ",\"window\":" + number_text(p.grid.slow_motion().window) + "}"
-                             : std::string("null"));
+  j += ",\"slowmo\":" +
+       (p.grid.slow_motion().on()
+            ? "{\"factor\":" + number_text(p.grid.slow_motion().factor) +
+                  ",\"window\":" + number_text(p.grid.slow_motion().window) + "}"
+            : std::string("null"));
   if (!gl.empty()) j += ",\"gl\":" + json_string(gl);
   j += ",\"simd\":" + json_string(simd_name(active_simd()));  // the path the frames ran on
   j += ",\"breaks\":" + breaks_json(p, breaks);
