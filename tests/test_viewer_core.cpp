@@ -230,7 +230,7 @@ TEST_CASE("the panels dock beside the picture, never over it, at every window si
         CHECK(d.plot.empty() == !plot);
         // 400 px a unit of scale, at most 40 % of the width: the picture keeps the rest.
         CHECK(column == std::min(static_cast<int>(400 * scale), static_cast<int>(0.4 * w)));
-        if (plot) CHECK(d.plot.h == std::min(static_cast<int>(320 * scale), h / 2));
+        if (plot) CHECK(d.plot.h == std::min(static_cast<int>(320 * scale), int(0.4 * h)));
       }
   // Hidden panels (Tab, presentation mode): the picture is the window.
   const cb::DockLayout hidden = cb::dock_layout(1920, 1080, 1.0f, false, true);

@@ -25,8 +25,10 @@ DockLayout dock_layout(int window_width, int window_height, float pixel_scale, b
                               static_cast<int>(kMaxColumnFraction * static_cast<float>(W)));
   if (column <= 0) return d;
   d.picture.w = W - column;
-  const int plot_h =
-      plot ? std::min(static_cast<int>(std::lround(kPlotHeight * pixel_scale)), H / 2) : 0;
+  // The controls keep at least 60 % of the height: at 720 p their status lines still show.
+  const int plot_h = plot ? std::min(static_cast<int>(std::lround(kPlotHeight * pixel_scale)),
+                                     static_cast<int>(kMaxPlotFraction * static_cast<float>(H)))
+                          : 0;
   d.controls = PixelRect{W - column, 0, column, H - plot_h};
   if (plot_h > 0) d.plot = PixelRect{W - column, H - plot_h, column, plot_h};
   return d;

@@ -33,9 +33,10 @@ struct UiScale {
 UiScale ui_scale(float content_scale, float user_scale, int window_width, int framebuffer_width);
 
 // The column's width and the plot's height at scale 1; the column never takes more than
-// kMaxColumnFraction of the window's width, the plot never more than half its height.
+// kMaxColumnFraction of the window's width, the plot never more than kMaxPlotFraction of its
+// height.
 inline constexpr float kColumnWidth = 400.0f, kPlotHeight = 320.0f;
-inline constexpr float kMaxColumnFraction = 0.4f;
+inline constexpr float kMaxColumnFraction = 0.4f, kMaxPlotFraction = 0.4f;
 
 struct DockLayout {
   PixelRect window;    // the whole framebuffer

@@ -404,7 +404,8 @@ struct Viewer {
     glViewport(0, 0, fb_w, fb_h);
 
     pick(snap, dock.picture);
-    const std::optional<SpringBox> marker = highlight(snap, dock.picture, plotted);
+    // Hidden panels leave the picture alone, as on the video: no marker either.
+    const std::optional<SpringBox> marker = highlight(snap, dock.picture, panels ? plotted : 0);
     plot.draw(session, plotted, dock.plot);
     const std::optional<PixelRect> hint_box = hint(dock.picture);
     ui.end_frame();
