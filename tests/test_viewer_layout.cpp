@@ -76,6 +76,7 @@ cb::Image headless_frame(const TempDir& dir, const json& layout) {
   char tau[32];
   std::snprintf(tau, sizeof tau, "%.10g", layout["tau"].get<double>());
   const std::string folder = dir.file(std::to_string(w) + "x" + std::to_string(h) + "_" + tau);
+  std::filesystem::create_directories(folder);
   const auto snap = run_chainbreak("snapshot " + kScene + " " + kSets + " --overlay all --size " +
                                    std::to_string(w) + "x" + std::to_string(h) + " --at " + tau +
                                    " -o " + folder);

@@ -2,7 +2,6 @@
 #pragma once
 
 #include <cstdlib>
-#include <fstream>
 #include <string>
 
 #include "test_support.h"
@@ -20,10 +19,6 @@ inline bool skip_without_xvfb() {
 inline RunResult view_on_screen(const std::string& screen, const std::string& args) {
   return run_shell("xvfb-run -a -s '-screen 0 " + screen + "x24' " + std::string(CHAINBREAK_EXE) +
                    " view " + args);
-}
-
-inline void write_file(const std::string& path, const std::string& text) {
-  std::ofstream(path) << text;
 }
 
 }  // namespace cb::test
