@@ -327,16 +327,19 @@ struct Viewer {
   }
 
   // The picture's framebuffer into the window's, 1:1 at its rectangle. llvmpipe pays per
-  // pixel: the window is cleared only where the picture leaves room (the panels' column,
-  // which their windows then cover).
-  void copy_to_window(unsigned source, const PixelRect& at, int window_height, bool fills_window) {
+  // pixel written to the window (tests/bench/README.md): only the rest of the window (the
+  // panels' column, which their windows then cover) is cleared, through the scissor box.
+  void copy_to_window(unsigned source, const PixelRect& at, const PixelRect& window_rect) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, source);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    glDisable(GL_SCISSOR_TEST);
-    if (!fills_window) {
+    const int window_height = window_rect.h;
+    if (at.right() < window_rect.right()) {
+      glEnable(GL_SCISSOR_TEST);
+      glScissor(at.right(), 0, window_rect.right() - at.right(), window_height);
       glClearColor(0, 0, 0, 1);
       glClear(GL_COLOR_BUFFER_BIT);
     }
+    glDisable(GL_SCISSOR_TEST);
     const int bottom = window_height - at.bottom();  // GL's rows count from the bottom
     glBlitFramebuffer(0, 0, at.w, at.h, at.x, bottom, at.x + at.w, bottom + at.h,
                       GL_COLOR_BUFFER_BIT, GL_NEAREST);
@@ -399,7 +402,7 @@ struct Viewer {
     GLint frame_buffer = 0;  // the picture's (Renderer::draw leaves it bound)
     glGetIntegerv(GL_FRAMEBUFFER_BINDING, &frame_buffer);
     if (r.snapshot || r.record || outputs.recording()) write_outputs(r);
-    copy_to_window(static_cast<unsigned>(frame_buffer), dock.picture, fb_h, !panels);
+    copy_to_window(static_cast<unsigned>(frame_buffer), dock.picture, dock.window);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, fb_w, fb_h);
 
