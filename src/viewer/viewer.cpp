@@ -44,9 +44,8 @@ struct Picture {
   std::unique_ptr<Renderer> renderer;
   std::unique_ptr<Overlay> overlay;
 
-  // True when it was laid out again.
-  bool fit(const Session& session, int w, int h, long layout_epoch) {
-    if (w == width && h == height && epoch == layout_epoch) return false;
+  void fit(const Session& session, int w, int h, long layout_epoch) {
+    if (w == width && h == height && epoch == layout_epoch) return;
     const RenderPlan plan = session.plan_at(w, h);
     style = plan.style;
     epoch = layout_epoch;
@@ -62,7 +61,6 @@ struct Picture {
     if (!want_overlay) overlay.reset();
     if (want_overlay && !overlay)
       overlay = std::make_unique<Overlay>(w, h, plan.frame.fps, plan.overlay, plan.style.theme);
-    return true;
   }
 };
 
