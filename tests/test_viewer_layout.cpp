@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -242,21 +243,52 @@ TEST_CASE(
   CHECK(back["ui_windows"].size() == 2);
 }
 
-TEST_CASE("the panels' text follows the UI scale", "[viewer][xvfb][layout]") {
+TEST_CASE("the panels' text follows the window's content scale and --ui-scale",
+          "[viewer][xvfb][layout]") {
   if (cb::test::skip_without_xvfb()) return;
   TempDir dir("chainbreak-view-layout");
-  // Xvfb reports a content scale of 1; --ui-scale multiplies it as a HiDPI screen would.
-  for (const std::string scale : {"1", "2"}) {
-    run_script(dir, "1920x1080", "0 layout " + dir.file("l" + scale + ".json") + "\n0 quit\n",
-               kScene + " " + kSets + " -q h --ui-scale " + scale);
+  const auto layout_at = [&](const std::string& name, const std::string& xft_dpi,
+                             const std::string& args) {
+    cb::test::write_file(dir.file(name + ".txt"),
+                         "0 layout " + dir.file(name + ".json") + "\n0 quit\n");
+    std::string command = std::string(CHAINBREAK_EXE) + " view " + kScene + " " + kSets + " -q h " +
+                          args + " --script " + dir.file(name + ".txt");
+    // The desktop's scale, as X11 desktops say it: Xft.dpi in the server's resources, which
+    // GLFW reads (96 dpi is 1). -noreset keeps them after xrdb disconnects.
+    if (!xft_dpi.empty()) {
+      cb::test::write_file(dir.file("xresources"), "Xft.dpi: " + xft_dpi + "\n");
+      command = "sh -c 'xrdb -nocpp -merge " + dir.file("xresources") + " && " + command + "'";
+    }
+    const TempDir auth("chainbreak-xauth");
+    const auto view = cb::test::run_shell("xvfb-run -a -f " + auth.file("Xauthority") +
+                                          " -s '-screen 0 1920x1080x24 -noreset' " + command);
+    INFO(view.err);
+    REQUIRE(view.status == 0);
+    return read_json(dir.file(name + ".json"));
+  };
+  const auto width = [](const json& j) { return box(j["controls"]).x1 - box(j["controls"]).x0; };
+  const json plain = layout_at("plain", "", "");
+  CHECK(plain["ui_scale"].get<double>() == 1.0);
+  CHECK(plain["font_px"].get<double>() == 17.0);
+  CHECK(width(plain) == 400);
+  // --ui-scale 2 on a plain screen: twice the text, the column at its cap (40 % of 1920).
+  const json doubled = layout_at("doubled", "", "--ui-scale 2");
+  CHECK(doubled["font_px"].get<double>() == 34.0);
+  CHECK(width(doubled) == 768);
+  // ImGui's own window is the docked rectangle at any scale.
+  CHECK(box(doubled["ui_windows"][0]["box"]).x0 == 1920 - 768);
+  if (std::system("command -v xrdb >/dev/null 2>&1") != 0) {
+    WARN("content scale not checked: xrdb not found (apt-get install x11-xserver-utils)");
+    return;
   }
-  const json one = read_json(dir.file("l1.json")), two = read_json(dir.file("l2.json"));
-  CHECK(one["font_px"].get<double>() == 17.0);
-  CHECK(two["font_px"].get<double>() == 34.0);
-  CHECK(box(one["controls"]).x1 - box(one["controls"]).x0 == 400);
-  CHECK(box(two["controls"]).x1 - box(two["controls"]).x0 == 768);  // 40 % of 1920
-  // ImGui's own window is the docked rectangle at either scale.
-  CHECK(box(two["ui_windows"][0]["box"]).x0 == 1920 - 768);
+  // A HiDPI desktop (192 dpi: content scale 2), then with --ui-scale 1.5 on top of it.
+  const json hidpi = layout_at("hidpi", "192", "");
+  CHECK(hidpi["ui_scale"].get<double>() == 2.0);
+  CHECK(hidpi["font_px"].get<double>() == 34.0);
+  const json both = layout_at("both", "192", "--ui-scale 1.5");
+  CHECK(both["ui_scale"].get<double>() == 3.0);
+  CHECK(both["font_px"].get<double>() == 51.0);
+  CHECK(width(both) == 768);
 }
 
 #endif  // CHAINBREAK_VIEWER_EXE
