@@ -218,7 +218,7 @@ TEST_CASE("the docked panels cover none of the wall, the beads and the force arr
 }
 
 TEST_CASE(
-    "a resize while playing relays out the picture within one frame; presentation mode "
+    "a resize while playing relays out the picture within one frame, and presentation mode "
     "gives it the screen",
     "[viewer][xvfb][layout]") {
   if (cb::test::skip_without_xvfb()) return;
