@@ -43,7 +43,6 @@ class Window {
   // Fullscreen on the window's monitor (the primary one when unknown), or back to the window
   // it was; nothing when already so.
   void set_fullscreen(bool on);
-  bool fullscreen() const { return fullscreen_; }
   static double now();  // seconds, monotonic
   // What the window shows, controls included: the back buffer, read before swap().
   Image read_back_buffer() const;
