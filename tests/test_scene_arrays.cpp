@@ -229,10 +229,11 @@ TEST_CASE("the scenes of issue #21 load with the chains their comments describe"
 
 // TODO(issue #21): hidden ("[.]") until the RK4 kernels use the chain's arrays (helper k21's
 // branch): main's kernels still run every chain as the uniform one (heavy_bead then breaks
-// spring 1 at tau = 32.42, weak_link spring 1 at 211.8). Drop "[.]" when they land.
+// spring 1 at tau = 32.42, weak_link spring 1 at 211.8). Drop "[.]" when they land; run it by
+// hand with: chainbreak_tests "[issue21-physics]".
 // Expected values: tests/scenes_issue21_oracle.py (scipy DOP853, rtol 1e-11), quoted to 9
 // digits; RK4 at dt = 0.01 and the located crossing agree with it far inside 1e-5.
-TEST_CASE("the scenes of issue #21 do what their comments say", "[.][scene][arrays][physics]") {
+TEST_CASE("the scenes of issue #21 do what their comments say", "[.][issue21-physics]") {
   const cb::ChainState two = run_until(shipped("two_materials.toml"), 22.0);
   CHECK(cb::extension(two, 10) == Approx(0.388776512).margin(1e-5));  // stiff: ~1/3
   CHECK(cb::extension(two, 20) == Approx(1.417503646).margin(1e-5));  // soft: ~4/3
