@@ -184,7 +184,7 @@ SceneDesc parse_scene(const std::string& text, const std::string& path,
   // Units first: they decide how every other number is read.
   d.units = scene_detail::read_units(r);
   const scene_detail::Conversion c = scene_detail::conversion_for(d.units);
-  d.chain = scene_detail::read_chain(r, d.units, c);
+  d.chain = scene_detail::read_chain(r, d.units, c, d.threshold_draw);
   d.drive = scene_detail::read_drive(r, c, file.parent_path().string());
   d.integrator = scene_detail::read_integrator(r, c);
   d.render = read_render(r);

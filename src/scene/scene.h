@@ -4,6 +4,7 @@
 // can make is reported as "file:line:column: what is wrong, and how to fix it".
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <optional>
@@ -73,11 +74,21 @@ struct RenderDesc {
 // Python module): messages then start at the key's name.
 using KeyOrigins = std::map<std::string, std::string, std::less<>>;
 
+// chain.threshold_dist, chain.threshold_shape, chain.seed as the scene gave them (issue #23):
+// the scene writer writes these three lines back instead of N drawn numbers.
+struct ThresholdDraw {
+  std::string dist;    // "weibull" or "normal"
+  double scale = 1.0;  // chain.threshold, dimensionless
+  double shape = 1.0;
+  std::int64_t seed = 0;
+};
+
 struct SceneDesc {
   std::string path;  // as given
   std::string name;  // file stem, used for output names
   std::string title;
   ChainParams chain;
+  std::optional<ThresholdDraw> threshold_draw;  // how chain.thresholds were drawn, if they were
   DriveDesc drive;
   IntegratorDesc integrator;
   std::optional<Units> units;

@@ -10,6 +10,7 @@
 #include <cstdint>
 
 #include "scene/scene_coefficients.h"
+#include "scene/threshold_draw.h"
 
 namespace cb::scene_detail {
 
@@ -47,11 +48,76 @@ const CoefficientKey kMass{"mass", "bead", 1.0, plain};
 const CoefficientKey kStiffness{"stiffness", "spring", 1.0, plain};
 const CoefficientKey kThreshold{"threshold", "spring", std::nullopt, force};
 
+// chain.threshold_dist, chain.threshold_shape, chain.seed (issue #23, threshold_draw.h): the
+// thresholds of a flawed chain, drawn with scale chain.threshold.
+std::optional<ThresholdDraw> read_threshold_draw(const SceneReader& r, bool beads_ok,
+                                                 ChainParams& p) {
+  const auto dist = r.string("chain", "threshold_dist");
+  const auto shape = r.number("chain", "threshold_shape");
+  const auto seed = r.integer("chain", "seed");
+  if (!dist) {
+    for (const char* key : {"threshold_shape", "seed"})
+      if (r.has("chain", key))
+        r.fail("chain", key,
+               "chain." + std::string(key) +
+                   " draws thresholds at random and needs chain.threshold_dist; add e.g. "
+                   "threshold_dist = \"weibull\" to [chain], or remove " +
+                   key);
+    return std::nullopt;
+  }
+  ThresholdDist kind = ThresholdDist::Weibull;
+  if (*dist == "normal") {
+    kind = ThresholdDist::Normal;
+  } else if (*dist != "weibull") {
+    r.fail("chain", "threshold_dist",
+           "unknown chain.threshold_dist '" + *dist + "'; " +
+               suggest(*dist, {"weibull", "normal"}, "\"", "\"") +
+               " (\"weibull\": modulus threshold_shape; \"normal\": relative standard deviation "
+               "threshold_shape, truncated at zero)");
+    return std::nullopt;
+  }
+  if (!shape)
+    r.fail_missing("chain", "threshold_shape",
+                   "(the Weibull modulus, or the normal's "
+                   "relative standard deviation)");
+  if (!seed) r.fail_missing("chain", "seed", "(an integer: the same seed, the same thresholds)");
+  if (!r.has("chain", "threshold"))
+    r.fail_missing("chain", "threshold", "(the scale of the drawn thresholds)");
+  else if (!p.thresholds.empty())
+    r.fail("chain", "threshold",
+           "chain.threshold_dist draws every spring's threshold, so chain.threshold must be one "
+           "number, their scale; write e.g. threshold = 3.0");
+  if (shape && !(*shape > 0.0))
+    r.fail("chain", "threshold_shape",
+           "chain.threshold_shape must be > 0, got " + format_exact(*shape) +
+               "; write e.g. threshold_shape = 6.0");
+  if (seed && *seed < 0)
+    r.fail("chain", "seed",
+           "chain.seed must be >= 0, got " + std::to_string(*seed) + "; write e.g. seed = 1");
+  if (!shape || !seed || r.failed("chain", "threshold") || r.failed("chain", "threshold_shape") ||
+      r.failed("chain", "seed") || !beads_ok || !(p.threshold > 0.0) ||
+      p.threshold == std::numeric_limits<double>::infinity())
+    return std::nullopt;  // each problem is noted (validate() says what is wrong with the
+                          // threshold)
+  if (p.beads > kMaxCoefficientBeads) {
+    r.fail("chain", "threshold_dist",
+           "drawn thresholds need N <= " + std::to_string(kMaxCoefficientBeads) +
+               " beads, got N = " + std::to_string(p.beads) + "; use fewer beads");
+    return std::nullopt;
+  }
+  const ThresholdDraw given{*dist, p.threshold, *shape, *seed};
+  // As for any threshold array, `threshold` becomes the smallest drawn value.
+  p.thresholds =
+      draw_thresholds(kind, p.threshold, *shape, static_cast<std::uint64_t>(*seed), p.beads);
+  p.threshold = *std::min_element(p.thresholds.begin(), p.thresholds.end());
+  return given;
+}
+
 // chain.mass, chain.stiffness, chain.threshold (scene_coefficients.h). A threshold array
 // sets `threshold`, the scale of the chain (the pull string's threshold, what normalize()
 // compares with), to its smallest value: the spring a slow pull breaks first.
 void read_chain_coefficients(const SceneReader& r, const Conversion& c, bool beads_ok,
-                             ChainParams& p) {
+                             ChainParams& p, std::optional<ThresholdDraw>& draw) {
   if (auto m = read_coefficients(r, kMass, p.beads, beads_ok, c)) p.mass = std::move(m->values);
   if (auto k = read_coefficients(r, kStiffness, p.beads, beads_ok, c))
     p.stiffness = std::move(k->values);
@@ -63,13 +129,15 @@ void read_chain_coefficients(const SceneReader& r, const Conversion& c, bool bea
       p.threshold = *std::min_element(p.thresholds.begin(), p.thresholds.end());
     }
   }
+  draw = read_threshold_draw(r, beads_ok, p);
   // Arrays of ones (and thresholds all equal) are the paper's uniform chain.
   p.normalize();
 }
 
 }  // namespace
 
-ChainParams read_chain(const SceneReader& r, std::optional<Units>& units, const Conversion& c) {
+ChainParams read_chain(const SceneReader& r, std::optional<Units>& units, const Conversion& c,
+                       std::optional<ThresholdDraw>& draw) {
   ChainParams p;
   const auto beads = r.integer("chain", "beads");
   if (!beads) r.fail_missing("chain", "beads", "(the number of beads N)");
@@ -99,7 +167,7 @@ ChainParams read_chain(const SceneReader& r, std::optional<Units>& units, const 
     units->friction = p.gamma * 2.0 * units->mass * units->omega0();
   }
 
-  read_chain_coefficients(r, c, beads_ok, p);
+  read_chain_coefficients(r, c, beads_ok, p, draw);
 
   const std::string break_on = r.string("chain", "break_on").value_or("abs");
   if (break_on == "abs")

@@ -27,7 +27,8 @@ double normal_cdf(double x) {
 double uniform_open01(std::uint64_t seed, std::uint64_t index) {
   // The seed is mixed first, so that neighbouring seeds give unrelated streams, then the
   // index on a Weyl step of its own.
-  const std::uint64_t bits = mix(mix(seed + 0x9E3779B97F4A7C15ull) ^ (index * 0xD1B54A32D192ED03ull));
+  const std::uint64_t bits =
+      mix(mix(seed + 0x9E3779B97F4A7C15ull) ^ (index * 0xD1B54A32D192ED03ull));
   return (static_cast<double>(bits >> 11) + 0.5) * 0x1.0p-53;
 }
 
@@ -39,8 +40,9 @@ double normal_quantile(double p) {
   // Symmetric: solve in the lower half, where p itself is represented most finely.
   if (p > 0.5) return -normal_quantile(1.0 - p);
   // A start within a few tenths everywhere: the tail's asymptote, or the linearised centre.
-  double x = p < 0.02 ? -std::sqrt(-2.0 * std::log(p) - std::log(-4.0 * std::numbers::pi * std::log(p)))
-                      : (p - 0.5) * std::sqrt(2.0 * std::numbers::pi);
+  double x = p < 0.02
+                 ? -std::sqrt(-2.0 * std::log(p) - std::log(-4.0 * std::numbers::pi * std::log(p)))
+                 : (p - 0.5) * std::sqrt(2.0 * std::numbers::pi);
   for (int i = 0; i < 60; ++i) {
     const double density = std::exp(-0.5 * x * x) / std::sqrt(2.0 * std::numbers::pi);
     const double residual = normal_cdf(x) - p;
