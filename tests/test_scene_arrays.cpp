@@ -161,8 +161,9 @@ TEST_CASE("chain arrays survive the scene writer in their shortest form", "[scen
       {"stiffness = { value = 4.0, from = 1, to = 2 }", "stiffness = { value = 4.0, to = 2 }"},
       {"stiffness = { base = 2.0, value = 4.0, from = 2, to = 4 }",
        "stiffness = { base = 2.0, value = 4.0, from = 2, to = 4 }"},
-      {"mass = { from_value = 0.1, to_value = 0.3 }",
-       "mass = { from_value = 0.1, to_value = 0.3 }"},
+      // 0.2 + (0.9 - 0.2) is 0.8999999999999999: bead N must still get 0.9 itself.
+      {"mass = { from_value = 0.2, to_value = 0.9 }",
+       "mass = { from_value = 0.2, to_value = 0.9 }"},
       {"mass = [1, 2, 1, 2, 1]", "mass = [1.0, 2.0, 1.0, 2.0, 1.0]"},
       {"threshold = { base = 1.0, value = 0.5, at = 2 }",
        "threshold = { base = 1.0, value = 0.5, at = 2 }"},
