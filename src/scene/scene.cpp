@@ -19,6 +19,10 @@
 //     over `base = ...`, every other one: default 1 for mass and stiffness, required for a
 //     threshold. Arrays of ones are the paper's uniform chain. Per-spring thresholds set the
 //     scalar `threshold` (the pull string's, the chain's scale) to their smallest value.
+//   threshold_dist = "weibull"  # issue #23: draw every spring's threshold, scale `threshold`
+//   threshold_shape = 6.0       #   (a number): Weibull modulus, or for "normal" the relative
+//   seed = 1                    #   standard deviation (truncated at zero); seed: integer >= 0.
+//                               #   Same seed, same thresholds everywhere (threshold_draw.h).
 //   break_on = "abs"      # "abs": |phi_j| >= phi_c (the paper); "stretch": phi_j >= phi_c
 //   pull_string = false   # pull through a massless string that breaks at f >= phi_c;
 //                         # requires threshold (Fig. 1, the one-ball experiment)

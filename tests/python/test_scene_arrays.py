@@ -76,3 +76,15 @@ dt = 0.01
     assert [m.split(": ")[0] for m in error.messages] == ["<toml>:2:9", "<toml>:3:9", "<toml>:7:1"]
     assert str(error) == "\n".join(error.messages)
     assert (error.file, error.line, error.column) == ("<toml>", 2, 9)  # the first
+
+
+def test_drawn_thresholds_depend_on_the_seed_alone():
+    tables = {k: dict(v) for k, v in BASE.items()}
+    tables["chain"].update(threshold=3.0, threshold_dist="weibull", threshold_shape=6.0, seed=1)
+    scene = chainbreak.Scene.from_dict(tables)
+    again = chainbreak.Scene.from_dict(tables)
+    assert scene.thresholds.tolist() == again.thresholds.tolist()
+    assert scene.threshold == min(scene.thresholds)
+    assert len(set(scene.thresholds.tolist())) == 5  # five springs, five draws
+    scene.set("chain.seed", 2)
+    assert scene.thresholds.tolist() != again.thresholds.tolist()
