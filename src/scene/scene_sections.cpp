@@ -99,9 +99,9 @@ std::optional<ThresholdDraw> read_threshold_draw(const SceneReader& r, bool bead
       p.threshold == std::numeric_limits<double>::infinity())
     return std::nullopt;  // each problem is noted (validate() says what is wrong with the
                           // threshold)
-  if (p.beads > kMaxCoefficientBeads) {
+  if (p.beads > kMaxDrawnBeads) {
     r.fail("chain", "threshold_dist",
-           "drawn thresholds need N <= " + std::to_string(kMaxCoefficientBeads) +
+           "drawn thresholds need N <= " + std::to_string(kMaxDrawnBeads) +
                " beads, got N = " + std::to_string(p.beads) + "; use fewer beads");
     return std::nullopt;
   }

@@ -16,6 +16,11 @@ namespace cb::scene_detail {
 
 enum class ThresholdDist { Weibull, Normal };
 
+// Drawing costs a few transcendental functions per spring, three times per scene read and
+// written (the reader, the writer's check, the reader again): 10^6 springs take about a second
+// under the sanitizers, where the fuzzers allow 10. Flawed chains are ensembles of short chains.
+inline constexpr int kMaxDrawnBeads = 1'000'000;
+
 // A uniform number in (0, 1), never 0 or 1: 53 random bits of hash(seed, index), centred.
 double uniform_open01(std::uint64_t seed, std::uint64_t index);
 
