@@ -78,8 +78,7 @@ std::optional<ThresholdDraw> read_threshold_draw(const SceneReader& r, bool bead
   }
   if (!shape)
     r.fail_missing("chain", "threshold_shape",
-                   "(the Weibull modulus, or the normal's "
-                   "relative standard deviation)");
+                   "(the Weibull modulus, or the normal's relative standard deviation)");
   if (!seed) r.fail_missing("chain", "seed", "(an integer: the same seed, the same thresholds)");
   if (!r.has("chain", "threshold"))
     r.fail_missing("chain", "threshold", "(the scale of the drawn thresholds)");
@@ -94,11 +93,11 @@ std::optional<ThresholdDraw> read_threshold_draw(const SceneReader& r, bool bead
   if (seed && *seed < 0)
     r.fail("chain", "seed",
            "chain.seed must be >= 0, got " + std::to_string(*seed) + "; write e.g. seed = 1");
+  // Each problem is noted here, or by validate() for the threshold itself.
   if (!shape || !seed || r.failed("chain", "threshold") || r.failed("chain", "threshold_shape") ||
       r.failed("chain", "seed") || !beads_ok || !(p.threshold > 0.0) ||
       p.threshold == std::numeric_limits<double>::infinity())
-    return std::nullopt;  // each problem is noted (validate() says what is wrong with the
-                          // threshold)
+    return std::nullopt;
   if (p.beads > kMaxDrawnBeads) {
     r.fail("chain", "threshold_dist",
            "drawn thresholds need N <= " + std::to_string(kMaxDrawnBeads) +
