@@ -236,8 +236,9 @@ TEST_CASE("the scenes of issue #21 load with the chains their comments describe"
 // digits; RK4 at dt = 0.01 and the located crossing agree with it far inside 1e-5.
 TEST_CASE("the scenes of issue #21 do what their comments say", "[.][issue21-physics]") {
   const cb::ChainState two = run_until(shipped("two_materials.toml"), 22.0);
-  CHECK(cb::extension(two, 10) == Approx(0.388776512).margin(1e-5));  // stiff: ~1/3
-  CHECK(cb::extension(two, 20) == Approx(1.417503646).margin(1e-5));  // soft: ~4/3
+  // A plain RK4 at dt = 0.01 (numpy) is within 2e-10 of these; the issue's bar is 1e-7.
+  CHECK(cb::extension(two, 10) == Approx(0.388776512).margin(1e-7));  // stiff: ~1/3
+  CHECK(cb::extension(two, 20) == Approx(1.417503646).margin(1e-7));  // soft: ~4/3
   const cb::ChainState heavy = run_until(shipped("heavy_bead.toml"), 60.0);
   REQUIRE(heavy.breaks.size() == 1);
   CHECK(heavy.breaks[0].spring == 16);
