@@ -9,14 +9,17 @@
 #include <cmath>
 #include <cstdint>
 
+#include "scene/scene_coefficients.h"
+
 namespace cb::scene_detail {
 
 std::optional<Units> read_units(const SceneReader& r) {
   if (!r.has_section("units")) return std::nullopt;
   Units u;
-  u.mass = r.require_number("units", "mass", "(in kg)");
-  u.stiffness = r.require_number("units", "stiffness", "(in N/m)");
-  u.length = r.require_number("units", "length", "(in m)");
+  // A missing one reads as 1 (its problem is noted) so that the rest can still be read.
+  u.mass = r.require_number("units", "mass", "(in kg)").value_or(1.0);
+  u.stiffness = r.require_number("units", "stiffness", "(in N/m)").value_or(1.0);
+  u.length = r.require_number("units", "length", "(in m)").value_or(1.0);
   u.friction = r.number("units", "friction").value_or(0.0);
   const std::string input = r.string("units", "input").value_or("dimensionless");
   if (input == "si")
@@ -29,16 +32,55 @@ std::optional<Units> read_units(const SceneReader& r) {
   return u;
 }
 
+namespace {
+
+double plain(const Conversion&, double v) {
+  return v;
+}
+double force(const Conversion& c, double v) {
+  return c.force(v);
+}
+
+// Masses are relative to m and stiffnesses to K ([units] mass and stiffness), so SI input
+// leaves them as they are; a threshold is a force (F_c = K l phi_c), converted as the scalar.
+const CoefficientKey kMass{"mass", "bead", 1.0, plain};
+const CoefficientKey kStiffness{"stiffness", "spring", 1.0, plain};
+const CoefficientKey kThreshold{"threshold", "spring", std::nullopt, force};
+
+// chain.mass, chain.stiffness, chain.threshold (scene_coefficients.h). A threshold array
+// sets `threshold`, the scale of the chain (the pull string's threshold, what normalize()
+// compares with), to its smallest value: the spring a slow pull breaks first.
+void read_chain_coefficients(const SceneReader& r, const Conversion& c, bool beads_ok,
+                             ChainParams& p) {
+  if (auto m = read_coefficients(r, kMass, p.beads, beads_ok, c)) p.mass = std::move(m->values);
+  if (auto k = read_coefficients(r, kStiffness, p.beads, beads_ok, c))
+    p.stiffness = std::move(k->values);
+  if (auto t = read_coefficients(r, kThreshold, p.beads, beads_ok, c)) {
+    if (t->scalar) {
+      p.threshold = *t->scalar;
+    } else if (!t->values.empty()) {
+      p.thresholds = std::move(t->values);
+      p.threshold = *std::min_element(p.thresholds.begin(), p.thresholds.end());
+    }
+  }
+  // Arrays of ones (and thresholds all equal) are the paper's uniform chain.
+  p.normalize();
+}
+
+}  // namespace
+
 ChainParams read_chain(const SceneReader& r, std::optional<Units>& units, const Conversion& c) {
   ChainParams p;
   const auto beads = r.integer("chain", "beads");
   if (!beads) r.fail_missing("chain", "beads", "(the number of beads N)");
   // ChainParams counts beads in an int; validate() checks the lower end.
-  if (*beads > INT_MAX)
+  if (beads && *beads > INT_MAX)
     r.fail("chain", "beads",
            "chain.beads = " + std::to_string(*beads) + " is too large (at most " +
                std::to_string(INT_MAX) + "); write e.g. beads = 30");
-  p.beads = static_cast<int>(std::max<std::int64_t>(*beads, INT_MIN));
+  if (beads) p.beads = static_cast<int>(std::clamp<std::int64_t>(*beads, INT_MIN, INT_MAX));
+  // The arrays need N; without a valid one they are left for the chain's own problem.
+  const bool beads_ok = beads && !r.failed("chain", "beads") && p.beads >= 1;
 
   const auto gamma = r.number("chain", "gamma");
   p.gamma = gamma.value_or(0.0);
@@ -57,7 +99,7 @@ ChainParams read_chain(const SceneReader& r, std::optional<Units>& units, const 
     units->friction = p.gamma * 2.0 * units->mass * units->omega0();
   }
 
-  if (auto threshold = r.number("chain", "threshold")) p.threshold = c.force(*threshold);
+  read_chain_coefficients(r, c, beads_ok, p);
 
   const std::string break_on = r.string("chain", "break_on").value_or("abs");
   if (break_on == "abs")
@@ -78,7 +120,8 @@ IntegratorDesc read_integrator(const SceneReader& r, const Conversion& c) {
   IntegratorDesc d;
   // dt defaults to 0.01 in tau whatever the input units: accurate and cheap for any N.
   if (const auto dt = r.number("integrator", "dt")) d.dt = c.time(*dt);
-  d.t_end = c.time(r.require_number("integrator", "t_end", "(when the run stops)"));
+  if (const auto t_end = r.require_number("integrator", "t_end", "(when the run stops)"))
+    d.t_end = c.time(*t_end);
   if (auto after = r.number("integrator", "after_break")) d.after_break = c.time(*after);
   return d;
 }

@@ -22,4 +22,8 @@ DriveDesc read_drive(const SceneReader& r, const Conversion& c, const std::strin
 RenderDesc read_render(const SceneReader& r);
 IntegratorDesc read_integrator(const SceneReader& r, const Conversion& c);
 
+// validate()'s checks, adding to `problems` and skipping keys that already have one (their
+// values are stand-ins). parse_scene calls it with the reader's problems.
+void check_values(const SceneDesc& scene, Problems& problems);
+
 }  // namespace cb::scene_detail

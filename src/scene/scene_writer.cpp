@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "scene/scene_coefficients.h"
 #include "scene/scene_reader.h"
 
 namespace cb {
@@ -93,7 +94,16 @@ std::string write_scene(const SceneDesc& scene) {
 
   const ChainParams& c = scene.chain;
   out << "\n[chain]\nbeads = " << c.beads << "\ngamma = " << number(c.gamma) << "\n";
-  if (c.breakable()) out << "threshold = " << number(c.threshold) << "\n";
+  // The arrays in their shortest exact form (scene_coefficients.h): a pattern written by a
+  // pattern stays one line.
+  if (!c.mass.empty())
+    out << "mass = " << scene_detail::coefficients_text(c.mass, 1.0, number) << "\n";
+  if (!c.stiffness.empty())
+    out << "stiffness = " << scene_detail::coefficients_text(c.stiffness, 1.0, number) << "\n";
+  if (!c.thresholds.empty())
+    out << "threshold = " << scene_detail::coefficients_text(c.thresholds, {}, number) << "\n";
+  else if (c.breakable())
+    out << "threshold = " << number(c.threshold) << "\n";
   out << "break_on = " << quoted(c.break_on == BreakMode::Abs ? "abs" : "stretch") << "\n";
   out << "pull_string = " << (c.pull_string ? "true" : "false") << "\n";
 
