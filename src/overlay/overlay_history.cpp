@@ -71,7 +71,8 @@ OverlayHistory::OverlayHistory(const ChainParams& params, const DriveDesc& drive
   d.strain_scale = setup.strain_scale;
   d.spacetime_columns = std::min(params.beads, kMaxSpacetimeColumns);
   d.exact = setup.exact && params.beads <= kExactMaxBeads;
-  if (d.exact) exact_ = std::make_unique<ExactChain>(params.beads, params.gamma, drive);
+  if (d.exact) exact_ = std::make_unique<ExactChain>(params, drive);
+  modes_ = ModeBasis(params, std::min(params.beads, kMaxModes));
 }
 
 OverlayHistory::~OverlayHistory() = default;
@@ -128,7 +129,7 @@ void OverlayHistory::record(std::int64_t frame, const ChainState& state, double 
     }
   }
 
-  mode_amplitudes(state, std::min(n, kMaxModes), d.mode_amplitude);
+  modes_.amplitudes(state, d.mode_amplitude);
   d.mode_peak.resize(d.mode_amplitude.size(), 0.0);
   for (std::size_t m = 0; m < d.mode_amplitude.size(); ++m) {
     d.mode_peak[m] = std::max(d.mode_peak[m], d.mode_amplitude[m]);

@@ -7,7 +7,7 @@
 // frame; the exact solution of the unbroken chain (ExactChain, Eqs. (exactpsi)-(exactconv))
 // for the same springs at the frame times and kExactPerFrame - 1 times between, up to the
 // first break; a row of the space-time picture (Fig. 3(b)'s view of the strain) per frame;
-// and the normal-mode amplitudes of the current state (modes.h).
+// and the amplitudes of the chain's own normal modes in the current state (modes.h).
 #pragma once
 
 #include <cstdint>
@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "drive/drive.h"
+#include "overlay/modes.h"
 #include "overlay/overlay_data.h"
 #include "physics/chain.h"
 
@@ -64,6 +65,7 @@ class OverlayHistory {
   OverlaySetup setup_;
   OverlayData data_;
   std::unique_ptr<ExactChain> exact_;
+  ModeBasis modes_;  // the chain's own modes for the bars
   std::int64_t next_frame_ = 0;
   double last_tau_ = 0.0;
   int exact_stride_ = 1;          // exact samples (kExactPerFrame per frame) between kept ones

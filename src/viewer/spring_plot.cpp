@@ -29,7 +29,7 @@ void SpringPlot::update_exact(const Session& session, int spring) {
   if (!exact_tried_) {
     exact_tried_ = true;
     if (scene.chain.beads <= kExactMaxBeads && scene.drive.type != DriveType::Expr)
-      exact_ = std::make_unique<ExactChain>(scene.chain.beads, scene.chain.gamma, scene.drive);
+      exact_ = std::make_unique<ExactChain>(scene.chain, scene.drive);
   }
   if (!exact_) return;
   const PhiHistory& h = session.phi_history();
