@@ -14,7 +14,7 @@ ChainCoefficients chain_coefficients(const ChainParams& params, bool per_bead_al
   c.threshold = p.threshold;
   c.stretch_only = p.break_on == BreakMode::Stretch;
   c.checks = p.breakable() && p.min_threshold() > 0.0;
-  c.per_bead = per_bead_always || !p.uniform_dynamics() || !p.uniform_thresholds();
+  c.per_bead = per_bead_always || !p.uniform_dynamics() || !p.uniform_thresholds() || p.hanging();
   if (!c.per_bead) return c;
   constexpr double kInf = std::numeric_limits<double>::infinity();
   const std::size_t size = static_cast<std::size_t>(n) + kCoefficientPad;
@@ -23,16 +23,30 @@ ChainCoefficients chain_coefficients(const ChainParams& params, bool per_bead_al
   c.stiffness.assign(size, 0.0);
   c.upper.assign(size, kInf);
   c.lower.assign(size, -kInf);
+  // Zeros for a chain without weight: phi_c,j - 0 == phi_c,j, its bounds unchanged.
+  const std::vector<double> eq = p.equilibrium_extensions();
+  if (p.hanging()) c.tension.assign(size, 0.0);
   for (int j = 1; j <= n; ++j) {
     const double m = p.mass_of(j);
     c.mass[j - 1] = m;
     c.inv_mass[j - 1] = 1.0 / m;
     c.stiffness[j - 1] = p.stiffness_of(j);
     const double phi_c = p.threshold_of(j);
-    c.upper[j - 1] = phi_c;
-    c.lower[j - 1] = c.stretch_only ? -kInf : -phi_c;
+    c.upper[j - 1] = phi_c - eq[j - 1];
+    c.lower[j - 1] = c.stretch_only ? -kInf : -phi_c - eq[j - 1];
+    if (p.hanging()) c.tension[j - 1] = c.stiffness[j - 1] * eq[j - 1];
   }
   return c;
+}
+
+double ChainCoefficients::broken_load(int bead, const std::vector<int>& broken) const {
+  if (!hanging()) return 0.0;
+  // Bead i (0-based) is the lower end of spring i + 1 and the upper end of spring i + 2.
+  double load = 0.0;
+  if (std::binary_search(broken.begin(), broken.end(), bead + 1)) load += tension[bead];
+  if (bead + 1 < beads && std::binary_search(broken.begin(), broken.end(), bead + 2))
+    load -= tension[bead + 1];
+  return load;
 }
 
 double ChainCoefficients::nearest_bound() const {

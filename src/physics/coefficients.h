@@ -41,6 +41,15 @@ struct ChainCoefficients {
   std::vector<double> stiffness;  // K_j; K_{N+1} = 0 at index N (the free end)
   std::vector<double> upper;      // spring j breaks at phi_j >= upper[j - 1] ...
   std::vector<double> lower;      // ... or phi_j <= lower[j - 1]
+  // A hanging chain (issue #22) is integrated about its equilibrium, u = psi - psi_eq
+  // (ChainParams::equilibrium_extensions): Eq. (general) for u is the chain without weight, and
+  // spring j's bounds are phi_c,j - phi_eq,j and -phi_c,j - phi_eq,j. What the equilibrium leaves
+  // over is a broken spring s's tension K_s phi_eq,s: once s breaks, bead s feels + K_s phi_eq,s
+  // (its weight share no longer held) and bead s - 1 feels - K_s phi_eq,s. The tiled kernel adds
+  // these loads at the ends of broken springs, which its general stencil already visits; the
+  // other kernels run only where no spring is broken. Empty unless the chain hangs; spring j at
+  // index j - 1, zeros past N.
+  std::vector<double> tension;  // K_j phi_eq,j
 
   double mass_of(int bead) const { return per_bead ? mass[bead - 1] : 1.0; }          // 1..N
   double stiffness_of(int spring) const { return per_bead ? stiffness[spring - 1] : 1.0; }  // 1..N
@@ -50,6 +59,10 @@ struct ChainCoefficients {
     if (per_bead) return lower[spring - 1];
     return stretch_only ? -std::numeric_limits<double>::infinity() : -threshold;
   }
+  bool hanging() const { return !tension.empty(); }
+  // The constant load on bead i (0-based) from the broken springs among `broken` (sorted, 1..N)
+  // at its two ends; 0 unless the chain hangs.
+  double broken_load(int bead, const std::vector<int>& broken) const;
   // The smallest |bound| of any spring: no spring breaks while every |phi_j| stays below it
   // (a lane's test whether any spring may cross, before the springs are tested one by one).
   double nearest_bound() const;

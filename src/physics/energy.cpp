@@ -49,7 +49,9 @@ EnergyBooks books_of(const ChainState& state, const EnergyParts& parts) {
   b.break_loss = state.break_loss;
   const double e = b.parts.total();
   const double expected = state.work - state.dissipated - state.break_loss;
-  const double scale = std::max({std::abs(e), std::abs(state.work), 1e-300});
+  // A hanging chain's E is counted from its equilibrium; its size is that of the terms.
+  const double scale =
+      std::max({std::abs(e), std::abs(state.work), std::abs(parts.reference), 1e-300});
   b.balance_error = std::abs(e - expected) / scale;
   return b;
 }
@@ -60,7 +62,27 @@ EnergyParts energy(const ChainState& state) {
   return energy_of<false>(state, nullptr, nullptr);
 }
 
+double hanging_equilibrium_energy(const ChainParams& params) {
+  const std::vector<double> phi = params.equilibrium_extensions();
+  double elastic = 0.0, weight = 0.0, psi = 0.0;
+  for (int j = 1; j <= params.beads; ++j) {
+    psi += phi[j - 1];
+    elastic += 0.5 * params.stiffness_of(j) * phi[j - 1] * phi[j - 1];
+    weight -= params.gravity * params.mass_of(j) * psi;
+  }
+  return elastic + weight;
+}
+
 EnergyParts energy(const ChainState& state, const ChainParams& params) {
+  if (params.hanging()) {
+    ChainParams plain = params;
+    plain.gravity = 0.0;
+    EnergyParts e = energy(state, plain);
+    for (int j = 1; j <= params.beads; ++j)
+      e.weight -= params.gravity * params.mass_of(j) * state.psi[j - 1];
+    e.reference = hanging_equilibrium_energy(params);
+    return e;
+  }
   if (params.uniform_dynamics()) return energy(state);
   const int n = static_cast<int>(state.psi.size());
   std::vector<double> mass(n), stiffness(n);

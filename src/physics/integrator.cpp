@@ -138,6 +138,23 @@ Integrator::Integrator(const ChainParams& params, Forcing forcing, IntegratorOpt
                                  options_.simd.value_or(active_simd()), options_.tiled_only, block);
   impl_->breakpoints_sorted =
       std::is_sorted(forcing_.breakpoints.begin(), forcing_.breakpoints.end());
+  if (params_.hanging()) {
+    // At rest in the hanging equilibrium: u = 0 (state_ holds u, see state()).
+    eq_psi_ = params_.equilibrium_positions();
+    eq_phi_ = params_.equilibrium_extensions();
+  }
+}
+
+const ChainState& Integrator::hanging_state() const {
+  if (shown_step_ != state_.step || shown_tau_ != state_.tau ||
+      shown_breaks_ != state_.breaks.size() || shown_.psi.empty()) {
+    shown_ = state_;
+    for (std::size_t i = 0; i < shown_.psi.size(); ++i) shown_.psi[i] += eq_psi_[i];
+    shown_step_ = state_.step;
+    shown_tau_ = state_.tau;
+    shown_breaks_ = state_.breaks.size();
+  }
+  return shown_;
 }
 
 Integrator::~Integrator() = default;
@@ -552,7 +569,8 @@ void Integrator::break_spring(int spring, double tau) {
     return;
   }
   // The spring's elastic energy K_j phi_j^2 / 2 leaves with it ((0.5 1) phi == 0.5 phi).
-  const double phi = extension(state_, spring);
+  double phi = extension(state_, spring);
+  if (params_.hanging()) phi += eq_phi_[spring - 1];  // state_ holds u = psi - psi_eq
   state_.break_loss += 0.5 * coef_.stiffness_of(spring) * phi * phi;
   state_.broken.insert(std::lower_bound(state_.broken.begin(), state_.broken.end(), spring),
                        spring);

@@ -81,7 +81,11 @@ class Integrator {
   // (physics/run_loop.h) with a step count as the only stop rule.
   bool advance_to(std::int64_t target_step);
 
-  const ChainState& state() const { return state_; }
+  // The chain's state. A hanging chain (ChainParams::hanging) is integrated about its
+  // equilibrium, u = psi - psi_eq (coefficients.h); this reports psi = u + psi_eq, made when the
+  // state has moved since the last call, so a reference to it is current only until the next
+  // step.
+  const ChainState& state() const { return params_.hanging() ? hanging_state() : state_; }
   const ChainParams& params() const { return params_; }
   // The chain's constants as the kernels read them, built once (coefficients.h).
   const ChainCoefficients& coefficients() const { return coef_; }
@@ -106,6 +110,15 @@ class Integrator {
   ChainState state_;
   std::string error_;
   std::unique_ptr<Impl> impl_;
+
+  // A hanging chain: psi_eq, phi_eq (index j - 1), and the last state() reported (psi, not u)
+  // with the step, tau and break count it was made at.
+  std::vector<double> eq_psi_, eq_phi_;
+  mutable ChainState shown_;
+  mutable std::int64_t shown_step_ = -1;
+  mutable double shown_tau_ = -1.0;
+  mutable std::size_t shown_breaks_ = 0;
+  const ChainState& hanging_state() const;
 
   std::vector<double> cuts_;        // split points of the current step (reused, no allocation)
   double stage_dissipation_ = 0.0;  // energy books of the last rk4() call, applied by commit()

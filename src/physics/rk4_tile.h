@@ -58,6 +58,7 @@ struct StepOutput {
 struct TileScratch {
   std::vector<double> x0, v0, xs, vs, xt, vt, sx, sv, kl, kr, fw;
   std::vector<double> im, wm;     // the window's 1/m and m (PerBead path)
+  std::vector<double> q;          // a hanging chain's loads at special beads (coefficients.h)
   std::vector<int> specials;      // local indices that need the general stencil, sorted
   const double* x_new = nullptr;  // where the last tile's new state is (xs/vs or xt/vt)
   const double* v_new = nullptr;

@@ -31,6 +31,7 @@ constexpr KeySpec kSchema[] = {
     {"chain", "stiffness", Kind::Coefficients, "stiffness = { value = 4.0, from = 1, to = 15 }"},
     {"chain", "break_on", Kind::String, "break_on = \"abs\""},
     {"chain", "pull_string", Kind::Bool, "pull_string = false"},
+    {"chain", "gravity", Kind::Number, "gravity = 0.1"},
     {"drive", "type", Kind::String, "type = \"ramp\""},
     {"drive", "beta", Kind::Number, "beta = 0.02"},
     {"drive", "amplitude", Kind::Number, "amplitude = 1.0"},
