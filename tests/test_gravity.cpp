@@ -306,3 +306,41 @@ TEST_CASE("gravity_map: exact regions and RK4 points on Heald's side of G = beta
     }
   }
 }
+
+TEST_CASE("lanes find a hanging chain's first break as Integrator does, bit for bit",
+          "[gravity][lanes]") {
+  // Eight hanging chains at different pulls, run side by side in SIMD lanes (a sweep) and one
+  // by one: the shifted bounds are the lanes' too.
+  std::vector<cb::LaneJob> jobs;
+  for (int k = 0; k < 8; ++k) {
+    cb::ChainParams chain;
+    chain.beads = 12;
+    chain.threshold = 1.0;
+    chain.gravity = 0.02 + 0.005 * k;
+    jobs.push_back(
+        {static_cast<std::size_t>(k), chain, cb::make_forcing(ramp(0.01 + 0.02 * k)), 0.01, 60000});
+  }
+  for (cb::SimdPath path : {cb::SimdPath::Sse2, cb::SimdPath::Avx2, cb::SimdPath::Avx512}) {
+    if (!cb::simd_supported(path)) continue;
+    std::vector<cb::LaneEnd> ends(jobs.size());
+    std::size_t next = 0;
+    auto take = [&]() -> std::optional<cb::LaneJob> {
+      if (next == jobs.size()) return std::nullopt;
+      return jobs[next++];
+    };
+    auto done = [&](std::size_t id, const cb::LaneEnd& e) { ends[id] = e; };
+    REQUIRE(cb::run_first_breaks_in_lanes(12, take, done, path));
+    for (const cb::LaneJob& job : jobs) {
+      cb::IntegratorOptions o;
+      o.dt = job.dt;
+      o.simd = path;
+      cb::Integrator sim(job.params, job.forcing, o);
+      while (sim.state().breaks.empty() && sim.state().step < job.last_step) REQUIRE(sim.step());
+      INFO(cb::simd_name(path) << " job " << job.id);
+      REQUIRE(ends[job.id].kind == cb::LaneEnd::Kind::Broke);
+      CHECK(ends[job.id].first.spring == sim.state().breaks.front().spring);
+      CHECK(ends[job.id].first.tau == sim.state().breaks.front().tau);
+      CHECK(ends[job.id].first.step == sim.state().breaks.front().step);
+    }
+  }
+}
