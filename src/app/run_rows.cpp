@@ -33,14 +33,20 @@ void set_energy(RunRow& row, const EnergyParts& e, int beads) {
   row.potential = per_particle(e.potential, beads);
 }
 
-// Kinetic 1/2 m_j psi_j'^2 and potential 1/2 K_j phi_j^2 (issue #21's general chain).
+// Kinetic 1/2 m_j psi_j'^2 and potential 1/2 K_j phi_j^2 (issue #21's general chain); a
+// hanging chain's weight and reference as energy(state, params) (physics/energy.h).
 EnergyParts energy_of(const ChainParams& chain, const std::vector<double>& vel,
-                      const std::vector<double>& phi) {
+                      const std::vector<double>& phi, const std::vector<double>& psi) {
   EnergyParts e;
   for (std::size_t i = 0; i < vel.size(); ++i) {
     const int j = static_cast<int>(i) + 1;
     e.kinetic += 0.5 * chain.mass_of(j) * vel[i] * vel[i];
     e.potential += 0.5 * chain.stiffness_of(j) * phi[i] * phi[i];
+  }
+  if (chain.hanging()) {
+    for (std::size_t i = 0; i < psi.size(); ++i)
+      e.weight -= chain.gravity * chain.mass_of(static_cast<int>(i) + 1) * psi[i];
+    e.reference = hanging_equilibrium_energy(chain);
   }
   return e;
 }
@@ -65,7 +71,7 @@ RunOutcome run_rk4(const SceneDesc& scene, const RunRequest& req, RowSink* sink)
     row.f = sim.force_now();
     for (int j = 1; j <= n; ++j) phi[j - 1] = extension(s, j);
     row.psi = req.psi ? &s.psi : nullptr;
-    set_energy(row, energy(s), n);
+    set_energy(row, energy(s, scene.chain), n);
     sink->row(row);
   };
   // One run loop (physics/run_loop.h): t_end, after_break past the first break, the stop flag.
@@ -88,7 +94,7 @@ RunOutcome run_rk4(const SceneDesc& scene, const RunRequest& req, RowSink* sink)
   out.steps = sim.state().step;
   out.tau_end = sim.state().tau;
   out.breaks = sim.state().breaks;
-  out.books = energy_books(sim.state());
+  out.books = energy_books(sim.state(), scene.chain);
   out.simd = sim.simd();
   return out;
 }
@@ -134,7 +140,7 @@ RunOutcome run_formula(const SceneDesc& scene, const RunRequest& req, RowSink* s
       const double span = row.tau + kDelta - std::max(0.0, row.tau - kDelta);
       for (int i = 0; i < n; ++i) vel[i] = (after[i] - before[i]) / span;
     }
-    set_energy(row, energy_of(scene.chain, vel, phi), n);
+    set_energy(row, energy_of(scene.chain, vel, phi, psi), n);
     sink->row(row);
     report(req, step);
   }
@@ -168,6 +174,10 @@ void check_run_request(const SceneDesc& scene, const RunRequest& request) {
     throw SceneError(scene.path +
                      ": the continuum formula Eq. (sum) needs a drive with values; impulses are "
                      "delta functions. Use --solver exact or rk4");
+  if (request.solver == "continuum" && scene.chain.hanging())
+    throw SceneError(scene.path +
+                     ": the continuum formula Eq. (sum) is the limit of the chain on a table; "
+                     "this chain hangs (chain.gravity > 0). Use --solver exact or rk4");
   if (request.solver == "continuum" && !scene.chain.uniform_dynamics())
     throw SceneError(scene.path +
                      ": the continuum formula Eq. (sum) is the paper's large-N limit of the "

@@ -40,14 +40,16 @@ double interval_upper(double p0, double p1, double m0, double m1, double h, doub
 }  // namespace
 
 BreakScan::BreakScan(const ExactChain& chain, BreakMode mode, double t_end, double step,
-                     std::vector<double> ratio)
+                     std::vector<double> ratio, std::vector<double> shift)
     : chain_(chain),
       n_(chain.beads()),
       abs_(mode == BreakMode::Abs),
       t_end_(t_end),
       step_(step),
       ratio_(std::move(ratio)),
+      shift_(std::move(shift)),
       pool_(kMaxDepth) {
+  assert(shift_.empty() || shift_.size() == static_cast<std::size_t>(n_));
   assert(step > 0.0 && std::isfinite(t_end));
   assert(ratio_.empty() || ratio_.size() == static_cast<std::size_t>(n_));
   for (double t : chain.drive_terms().breakpoints())
@@ -101,7 +103,14 @@ bool BreakScan::advance() {
     const double e = a_.error.empty() ? 0.0 : std::max(a_.error[i], b_.error[i]);
     bound_up_[i] = interval_upper(pa, pb, ma, mb, h, M, e);
     bound_down_[i] = abs_ ? interval_upper(-pa, -pb, -ma, -mb, h, M, e) : -kNone;
-    bound_max_ = std::max({bound_max_, bound_up_[i] / ratio(i + 1), bound_down_[i] / ratio(i + 1)});
+    if (shift_.empty()) {
+      bound_max_ =
+          std::max({bound_max_, bound_up_[i] / ratio(i + 1), bound_down_[i] / ratio(i + 1)});
+    } else {  // a hanging chain: the levels c r_j -+ shift_j, as c
+      const double s = shift(i + 1);
+      bound_max_ = std::max(
+          {bound_max_, (bound_up_[i] + s) / ratio(i + 1), (bound_down_[i] - s) / ratio(i + 1)});
+    }
   }
   return true;
 }
@@ -175,7 +184,9 @@ FirstBreak BreakScan::first(double c, double limit) {
       int spring = -1;
       for (int i = 0; i < n_; ++i)
         for (int k = 0; k < signs; ++k) {
-          const double s = k == 0 ? 1.0 : -1.0, ci = c * ratio(i + 1);
+          const double s = k == 0 ? 1.0 : -1.0;
+          // A hanging chain's levels are shifted by phi_eq,j: up c r_j - shift, down c r_j + shift.
+          const double ci = shift_.empty() ? c * ratio(i + 1) : c * ratio(i + 1) - s * shift(i + 1);
           if ((k == 0 ? bound_up_[i] : bound_down_[i]) < ci) continue;
           const double ea = a_.error.empty() ? 0.0 : a_.error[i];
           const double eb = b_.error.empty() ? 0.0 : b_.error[i];

@@ -34,8 +34,11 @@ class BreakScan {
  public:
   // step: the sampling interval of the sweep (shortened at breakpoints and at t_end).
   // ratio: r_j of spring j at index j-1 (all > 0), or empty for r_j = 1.
+  // shift: a hanging chain's phi_eq,j at index j-1 (issue #22), or empty for none. The chain's
+  // phi_weights then give u_j = phi_j - phi_eq,j, and spring j breaks when u_j >= c r_j - shift_j
+  // or (Abs) -u_j >= c r_j + shift_j: still non-decreasing in c, so one sweep still serves.
   BreakScan(const ExactChain& chain, BreakMode mode, double t_end, double step,
-            std::vector<double> ratio = {});
+            std::vector<double> ratio = {}, std::vector<double> shift = {});
 
   // The first tau <= limit at which a spring j reaches c r_j, c > 0. c must not decrease
   // from one call to the next.
@@ -65,12 +68,14 @@ class BreakScan {
   void mode_errors(const Probe& p, std::vector<double>& out) const;
   double spring_error(int spring, const std::vector<double>& mode_error) const;
   double ratio(int spring) const { return ratio_.empty() ? 1.0 : ratio_[spring - 1]; }
+  double shift(int spring) const { return shift_.empty() ? 0.0 : shift_[spring - 1]; }
 
   const ExactChain& chain_;
   const int n_;
   const bool abs_;
   const double t_end_, step_;
   const std::vector<double> ratio_;
+  const std::vector<double> shift_;
   std::vector<double> breakpoints_;
   std::size_t next_break_ = 0;
   Node a_, b_;

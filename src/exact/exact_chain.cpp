@@ -53,7 +53,17 @@ ExactChain::ExactChain(const ChainParams& chain, DriveDesc drive)
     init_uniform();
   else
     init_general(chain);
+  if (chain.hanging()) {  // the static offset: u = psi - psi_eq obeys the chain without weight
+    eq_psi_ = chain.equilibrium_positions();
+    eq_phi_ = chain.equilibrium_extensions();
+  }
 }
+
+namespace {
+void add_offset(const std::vector<double>& offset, std::vector<double>& out) {
+  for (std::size_t i = 0; i < offset.size(); ++i) out[i] += offset[i];
+}
+}  // namespace
 
 void ExactChain::init_uniform() {
   const int beads = n_;
@@ -224,9 +234,15 @@ void ExactChain::evaluate(double tau, std::vector<double>* psi, std::vector<doub
                           std::vector<double>* phi, std::vector<double>* phi_rate) const {
   std::vector<double> x, v;
   modal(tau, x, v);
-  if (psi) apply(psi_w_, x, *psi);
+  if (psi) {
+    apply(psi_w_, x, *psi);
+    add_offset(eq_psi_, *psi);
+  }
   if (velocity) apply(psi_w_, v, *velocity);
-  if (phi) apply(phi_w_, x, *phi);
+  if (phi) {
+    apply(phi_w_, x, *phi);
+    add_offset(eq_phi_, *phi);
+  }
   if (phi_rate) apply(phi_w_, v, *phi_rate);
 }
 
@@ -246,13 +262,15 @@ void ExactChain::phi_rate(double tau, std::vector<double>& out) const {
 double ExactChain::psi(int bead, double tau) const {
   std::vector<double> x, v;
   modal(tau, x, v);
-  return dot(&psi_w_[static_cast<std::size_t>(bead - 1) * n_], x);
+  const double u = dot(&psi_w_[static_cast<std::size_t>(bead - 1) * n_], x);
+  return eq_psi_.empty() ? u : u + eq_psi_[bead - 1];
 }
 
 double ExactChain::phi(int spring, double tau) const {
   std::vector<double> x, v;
   modal(tau, x, v);
-  return dot(phi_weights(spring), x);
+  const double u = dot(phi_weights(spring), x);
+  return eq_phi_.empty() ? u : u + eq_phi_[spring - 1];
 }
 
 // Eq. (exactgreen), with g_n from the stable forms of detail::Oscillator.

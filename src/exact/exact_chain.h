@@ -70,7 +70,10 @@ class ExactChain {
   // For the first-break scan. modal_before: the left limit at tau, i.e. a kick landing
   // exactly at tau not yet applied (x is continuous, x' jumps).
   void modal_before(double tau, std::vector<double>& x, std::vector<double>& xdot) const;
-  // phi_j = sum_n w[n] x_n with w[n] = c_n 2 cos(k_n (j - 1/2)) sin(k_n / 2); N entries.
+  // Static offset of a hanging chain's spring j (0 without weight).
+  double equilibrium_phi(int spring) const { return eq_phi_.empty() ? 0.0 : eq_phi_[spring - 1]; }
+  // phi_j = sum_n w[n] x_n with w[n] = c_n 2 cos(k_n (j - 1/2)) sin(k_n / 2); N entries (a
+  // hanging chain's phi_j - phi_eq,j).
   const double* phi_weights(int spring) const {
     return &phi_w_[static_cast<std::size_t>(spring - 1) * n_];
   }
@@ -84,6 +87,10 @@ class ExactChain {
   void init_uniform();
   void init_general(const ChainParams& chain);
 
+  // A hanging chain (chain.gravity > 0, issue #22): its equilibrium psi_eq and phi_eq, added to
+  // psi and phi; the modes, phi_weights, velocities and rates are those of u = psi - psi_eq.
+  // Empty without weight.
+  std::vector<double> eq_psi_, eq_phi_;
   int n_;
   double gamma_;
   bool uniform_ = true;

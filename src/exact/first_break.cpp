@@ -52,8 +52,11 @@ FirstBreak exact_first_break(const ChainParams& chain, const DriveDesc& drive, d
   const double string_tau =
       chain.pull_string ? exact.drive_terms().first_time_at_least(chain.threshold) : kInf;
   const double limit = std::min(t_end, string_tau);
+  // A hanging chain's bounds are shifted by its equilibrium (break_scan.h); none otherwise.
+  std::vector<double> shift;
+  if (chain.hanging()) shift = chain.equilibrium_extensions();
   detail::BreakScan scan(exact, chain.break_on, limit, scan_step(exact.drive_terms()),
-                         threshold_ratios(chain));
+                         threshold_ratios(chain), std::move(shift));
   const FirstBreak spring = scan.first(chain.min_threshold(), limit);
   if (spring.broke && spring.tau < string_tau) return spring;
   if (string_tau <= t_end) return {true, 0, string_tau};
@@ -76,6 +79,9 @@ std::vector<FirstBreak> breaking_map(int beads, double gamma, BreakMode mode,
 // zeta_c phi_c,j / min_k phi_c,k.
 std::vector<FirstBreak> breaking_map(const ChainParams& chain, const std::vector<double>& zeta_c,
                                      double t_end, const std::atomic<bool>* stop) {
+  // Eq. (rescale2) does not hold under a weight (G does not scale with beta): a hanging chain's
+  // map is one exact_first_break per value.
+  assert(!chain.hanging());
   DriveDesc ramp;
   ramp.type = DriveType::Ramp;
   ramp.beta = 1.0;

@@ -88,6 +88,8 @@ const std::vector<FigureEntry>& figure_entries() {
       {"fig5", figure_5},
       {"breaking_map", figure_breaking_map},
       {"one_body_map", figure_one_body_map},
+      {"gravity_map", figure_gravity_map},
+      {"hanging_map", figure_hanging_map},
   };
   return entries;
 }

@@ -48,6 +48,10 @@ Figure figure_5(const FigureOptions&);   // Eq. (exactconv) vs RK4, with an inse
 // The maps (figures_maps.cpp).
 Figure figure_breaking_map(const FigureOptions&);
 Figure figure_one_body_map(const FigureOptions&);
+// Under gravity (figures_gravity.cpp, issue #22): Heald's ball in the (beta, G) plane; which
+// spring of a hanging N = 30 chain breaks first against beta.
+Figure figure_gravity_map(const FigureOptions&);
+Figure figure_hanging_map(const FigureOptions&);
 
 // The breaking map's range and its three thresholds of Fig. 4(c), for N = 30.
 inline constexpr int kMapBeads = 30;
@@ -55,6 +59,10 @@ inline constexpr double kMapZetaMax = 250.0;  // past 8N = 240
 inline constexpr double kFig4cThresholds[3] = {40.0, 100.0, 160.0};
 // The one-body map's range of beta (log scale).
 inline constexpr double kOneBodyBetaLo = 0.01, kOneBodyBetaHi = 10.0;
+// The gravity map's range (linear beta: the windows m = 1, 2, 3 and the jerk; G up to past the
+// first window's top, 0.128) and the hanging map's (log beta).
+inline constexpr double kGravityBetaLo = 0.03, kGravityBetaHi = 0.5, kGravityGMax = 0.3;
+inline constexpr double kHangingBetaLo = 0.002, kHangingBetaHi = 2.0;
 
 // Shared by the builders (figure.cpp).
 std::vector<double> linspace(double lo, double hi, int count);

@@ -91,7 +91,8 @@ void OverlayHistory::record(std::int64_t frame, const ChainState& state, double 
   d.tau = state.tau;
   if (setup_.omega0 > 0) d.seconds = state.tau / setup_.omega0;
   d.force = force;
-  const EnergyParts e = energy(state);
+  // A hanging chain's energy counts its weight (physics/energy.h); else the paper's.
+  const EnergyParts e = params_.hanging() ? energy(state, params_) : energy(state);
   d.energy = per_particle(e.total(), n);
   d.kinetic = per_particle(e.kinetic, n);
   d.potential = per_particle(e.potential, n);

@@ -38,6 +38,10 @@ struct ChainParams {
   std::vector<double> mass;        // m_j, bead j (1..N) at index j-1; empty: all 1
   std::vector<double> stiffness;   // K_j, spring j (1..N) at index j-1; empty: all 1
   std::vector<double> thresholds;  // phi_c,j, spring j at index j-1; empty: all `threshold`
+  // Gravity (issue #22): the weight G of a bead of unit mass in units of K l (G = m g / (K l)),
+  // acting on bead j as + m_j G. With G > 0 the wall is a ceiling, the chain hangs from it and
+  // starts at rest in its hanging equilibrium (equilibrium_extension).
+  double gravity = 0.0;
 
   // Some spring can break (a finite threshold somewhere).
   bool breakable() const;
@@ -53,6 +57,14 @@ struct ChainParams {
   double threshold_of(int spring) const {
     return thresholds.empty() || spring == 0 ? threshold : thresholds[spring - 1];
   }
+  // The chain hangs under its weight (gravity > 0).
+  bool hanging() const { return gravity > 0.0; }
+  // The hanging equilibrium, Eq. (general) with f = 0 and psi'' = 0: spring j carries the weight
+  // of the beads below it, K_j phi_eq,j = G sum_{i>=j} m_i. Spring j (1..N) at index j-1; all
+  // zeros when gravity = 0.
+  std::vector<double> equilibrium_extensions() const;
+  // psi_eq,j = sum_{i<=j} phi_eq,i, bead j at index j-1.
+  std::vector<double> equilibrium_positions() const;
   // The smallest phi_c,j (what a slow pull breaks first); `threshold` for a uniform chain.
   double min_threshold() const;
   // Clears the arrays whose values are all the uniform ones (1 for mass and stiffness,

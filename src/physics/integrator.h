@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "physics/chain.h"
+#include "physics/coefficients.h"
 #include "physics/forcing.h"
 #include "physics/simd.h"
 
@@ -39,6 +40,9 @@ struct IntegratorOptions {
   // one thread, no spring broken) and in temporal blocks (the window kernel). Same bits
   // either way; tests compare the two paths.
   bool tiled_only = false;
+  // Always take the PerBead coefficient policy (stencil.inc), also for a chain whose arrays are
+  // all ones: the same bits as the Uniform policy, which tests check.
+  bool per_bead_policy = false;
 };
 
 inline constexpr int kDefaultBlockSteps = 8;
@@ -77,8 +81,14 @@ class Integrator {
   // (physics/run_loop.h) with a step count as the only stop rule.
   bool advance_to(std::int64_t target_step);
 
-  const ChainState& state() const { return state_; }
+  // The chain's state. A hanging chain (ChainParams::hanging) is integrated about its
+  // equilibrium, u = psi - psi_eq (coefficients.h); this reports psi = u + psi_eq, made when the
+  // state has moved since the last call, so a reference to it is current only until the next
+  // step.
+  const ChainState& state() const { return params_.hanging() ? hanging_state() : state_; }
   const ChainParams& params() const { return params_; }
+  // The chain's constants as the kernels read them, built once (coefficients.h).
+  const ChainCoefficients& coefficients() const { return coef_; }
   double dt() const { return options_.dt; }
   // Whether steps take the one-chain kernel (rk4_chain.h) while no spring is broken: one
   // worker, N < 20000, AVX2 or AVX-512, not tiled_only. Same bits either way.
@@ -94,11 +104,21 @@ class Integrator {
  private:
   struct Impl;
   ChainParams params_;
+  ChainCoefficients coef_;
   Forcing forcing_;
   IntegratorOptions options_;
   ChainState state_;
   std::string error_;
   std::unique_ptr<Impl> impl_;
+
+  // A hanging chain: psi_eq, phi_eq (index j - 1), and the last state() reported (psi, not u)
+  // with the step, tau and break count it was made at.
+  std::vector<double> eq_psi_, eq_phi_;
+  mutable ChainState shown_;
+  mutable std::int64_t shown_step_ = -1;
+  mutable double shown_tau_ = -1.0;
+  mutable std::size_t shown_breaks_ = 0;
+  const ChainState& hanging_state() const;
 
   std::vector<double> cuts_;        // split points of the current step (reused, no allocation)
   double stage_dissipation_ = 0.0;  // energy books of the last rk4() call, applied by commit()
@@ -124,5 +144,8 @@ class Integrator {
 // Largest dt for which classical RK4 is stable on every normal mode of an N-bead chain
 // with friction gamma (|R(h mu)| <= 1 for the eigenvalues mu of Eq. (dimless)).
 double rk4_stability_limit(int beads, double gamma);
+// The same for any chain of Eq. (general): masses and stiffnesses included (the uniform chain's
+// answer is the one above). See rk4_stability_limit's definition for the bound used.
+double rk4_stability_limit(const ChainParams& params);
 
 }  // namespace cb

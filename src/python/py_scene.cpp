@@ -181,6 +181,9 @@ void bind_scene(py::module_& m) {
       .def_property_readonly("title", [](const Scene& s) { return s.resolve().title; })
       .def_property_readonly("beads", [](const Scene& s) { return s.resolve().chain.beads; })
       .def_property_readonly("gamma", [](const Scene& s) { return s.resolve().chain.gamma; })
+      .def_property_readonly(
+          "gravity", [](const Scene& s) { return s.resolve().chain.gravity; },
+          "chain.gravity: G = m g / (K l), the weight of a unit-mass bead (0: on a table).")
       .def_property_readonly("threshold",
                              [](const Scene& s) -> py::object {
                                const SceneDesc d = s.resolve();

@@ -26,6 +26,8 @@
 //   break_on = "abs"      # "abs": |phi_j| >= phi_c (the paper); "stretch": phi_j >= phi_c
 //   pull_string = false   # pull through a massless string that breaks at f >= phi_c;
 //                         # requires threshold (Fig. 1, the one-ball experiment)
+//   gravity = 0.0         # G = m g / (K l) >= 0 (issue #22): the chain hangs from a ceiling and
+//                         # starts in its hanging equilibrium; a force (newtons for SI input)
 //
 //   [drive]                        # required; f(tau) = g(tau - t0) for tau >= t0, 0 before
 //   type = "ramp"         # step | ramp | sine | impulses | table | expr (required)

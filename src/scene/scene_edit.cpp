@@ -26,6 +26,7 @@ struct NumberKey {
 // numbers and handled apart.
 const NumberKey kNumberKeys[] = {
     {"chain.threshold", Quantity::Force, [](SceneDesc& s) { return &s.chain.threshold; }},
+    {"chain.gravity", Quantity::Force, [](SceneDesc& s) { return &s.chain.gravity; }},
     {"drive.beta", Quantity::Slope, [](SceneDesc& s) { return &s.drive.beta; }},
     {"drive.amplitude", Quantity::Force, [](SceneDesc& s) { return &s.drive.amplitude; }},
     {"drive.period", Quantity::Time, [](SceneDesc& s) { return &s.drive.period; }},

@@ -34,6 +34,7 @@ constexpr KeySpec kSchema[] = {
     {"chain", "seed", Kind::Integer, "seed = 1"},
     {"chain", "break_on", Kind::String, "break_on = \"abs\""},
     {"chain", "pull_string", Kind::Bool, "pull_string = false"},
+    {"chain", "gravity", Kind::Number, "gravity = 0.1"},
     {"drive", "type", Kind::String, "type = \"ramp\""},
     {"drive", "beta", Kind::Number, "beta = 0.02"},
     {"drive", "amplitude", Kind::Number, "amplitude = 1.0"},

@@ -180,6 +180,8 @@ ChainParams read_chain(const SceneReader& r, std::optional<Units>& units, const 
                " (\"abs\": |phi| >= threshold, Eq. (break); \"stretch\": phi >= threshold)");
 
   p.pull_string = r.boolean("chain", "pull_string").value_or(false);
+  // The weight of a unit-mass bead, a force: newtons with input = "si", like the threshold.
+  if (const auto g = r.number("chain", "gravity")) p.gravity = c.force(*g);
   return p;
 }
 

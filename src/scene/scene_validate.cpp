@@ -14,6 +14,7 @@
 // stand-in.
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "physics/integrator.h"
 #include "scene/scene.h"
@@ -129,6 +130,7 @@ class Checker {
 
   bool units() const;  // false when a unit is wrong (then converted numbers are not meaningful)
   void chain() const;
+  void gravity() const;
   void coefficients(const std::string& key, const char* element, const char* what,
                     const std::vector<double>& values, Quantity q) const;
   void drive() const;
@@ -185,6 +187,42 @@ void Checker::chain() const {
     fail("chain.pull_string",
          "chain.pull_string = true needs chain.threshold (the string breaks when f reaches "
          "it); add e.g. threshold = 1.0 to [chain], or set pull_string = false");
+  gravity();
+}
+
+// chain.gravity = G >= 0, and light enough that the hanging equilibrium breaks no spring:
+// phi_eq,j = G sum_{i>=j} m_i / K_j < phi_c,j for every j (issue #22).
+void Checker::gravity() const {
+  const ChainParams& p = scene_.chain;
+  finite("chain.gravity", p.gravity);
+  if (p.gravity < 0.0) {
+    fail("chain.gravity",
+         "chain.gravity must be >= 0 (the weight m g / (K l) of a bead; the chain "
+         "hangs down from the wall), got " +
+             shown(p.gravity, Quantity::Force) +
+             "; write e.g. gravity = 0.1, or gravity = 0 for a chain on a table");
+    return;
+  }
+  if (!p.hanging() || !p.breakable() ||
+      failed({"chain.beads", "chain.mass", "chain.stiffness", "chain.threshold"}))
+    return;
+  // The heaviest G the chain holds: min_j phi_c,j K_j / sum_{i>=j} m_i.
+  const std::vector<double> eq = p.equilibrium_extensions();
+  double most = std::numeric_limits<double>::infinity(), below = 0.0;
+  int weakest = 0;
+  for (int j = p.beads; j >= 1; --j) {
+    below += p.mass_of(j);
+    const double g = p.threshold_of(j) * p.stiffness_of(j) / below;
+    if (g < most) most = g, weakest = j;
+  }
+  if (p.gravity >= most)
+    fail("chain.gravity",
+         "chain.gravity = " + shown(p.gravity, Quantity::Force) +
+             " is too heavy: the hanging chain's own weight stretches spring " +
+             std::to_string(weakest) + " to phi_eq = " + format_approx(eq[weakest - 1]) +
+             ", at or beyond its threshold " + shown(p.threshold_of(weakest), Quantity::Force) +
+             ", before any pull; use gravity < " + shown(most, Quantity::Force) +
+             " or raise chain.threshold");
 }
 
 // An array of the chain: one value per bead or spring, each finite and > 0.

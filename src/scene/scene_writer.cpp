@@ -118,6 +118,7 @@ std::string write_scene(const SceneDesc& scene) {
     out << "threshold = " << number(c.threshold) << "\n";
   out << "break_on = " << quoted(c.break_on == BreakMode::Abs ? "abs" : "stretch") << "\n";
   out << "pull_string = " << (c.pull_string ? "true" : "false") << "\n";
+  if (c.hanging()) out << "gravity = " << number(c.gravity) << "\n";
 
   write_drive(out, scene);
 
