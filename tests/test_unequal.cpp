@@ -8,8 +8,8 @@
 #include <cstring>
 #include <fstream>
 #include <map>
-#include <optional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -222,20 +222,32 @@ TEST_CASE("an unequal chain with per-spring thresholds: every path gives the til
   Case small{"N=30 ramp", unequal_chain(30, 0.0, cb::BreakMode::Abs), {}, 0.01, 8000, false};
   small.drive.beta = 0.05;
   cases.push_back(small);
-  Case mid{"N=2053 sine, friction", unequal_chain(2053, 0.03, cb::BreakMode::Abs), {}, 0.02, 2000,
+  Case mid{"N=2053 sine, friction",
+           unequal_chain(2053, 0.03, cb::BreakMode::Abs),
+           {},
+           0.02,
+           2000,
            false};
   mid.drive.type = cb::DriveType::Sine;
   mid.drive.amplitude = 0.5;
   mid.drive.period = 5.3;
   cases.push_back(mid);
-  Case kicks{"N=61 kicks, stretch", unequal_chain(61, 0.01, cb::BreakMode::Stretch), {}, 0.01,
-             5000, false};
+  Case kicks{"N=61 kicks, stretch",
+             unequal_chain(61, 0.01, cb::BreakMode::Stretch),
+             {},
+             0.01,
+             5000,
+             false};
   kicks.drive.type = cb::DriveType::Impulses;
   kicks.drive.times = {0.0, 12.345, 25.0};
   kicks.drive.strengths = {1.1, -0.8, 1.6};
   cases.push_back(kicks);
-  Case big{"N=70001 step, stretch", unequal_chain(70001, 0.0, cb::BreakMode::Stretch), {}, 0.05,
-           240, true};
+  Case big{"N=70001 step, stretch",
+           unequal_chain(70001, 0.0, cb::BreakMode::Stretch),
+           {},
+           0.05,
+           240,
+           true};
   big.drive.type = cb::DriveType::Step;
   big.drive.amplitude = 0.9;
   cases.push_back(big);
@@ -401,6 +413,6 @@ TEST_CASE("RK4's stability limit of an unequal chain", "[unequal]") {
     sim.advance_to(20000);
     return sim.error().empty() ? cb::energy(sim.state(), i0).total() : HUGE_VAL;
   };
-  CHECK(energy_after(0.98 * limit) < 1.0);      // the kick's energy 1 / (2 m_N) = 0.5
+  CHECK(energy_after(0.98 * limit) < 1.0);     // the kick's energy 1 / (2 m_N) = 0.5
   CHECK(energy_after(1.05 * limit) > 1000.0);  // the highest mode grows
 }
