@@ -342,9 +342,9 @@ TEST_CASE("a block's states and per-step sums equal the one-step kernel's on a m
                 kernel(in, ranges[w].first, ranges[w].second, scratch, out);
                 if (w == 0)
                   for (const auto& c : out.candidates)
-                    crossing[k] = crossing[k] ||
-                                  cb::detail::hermite_first_crossing(c.p0, c.p1, c.m0, c.m1, in.h,
-                                                                     0.62, -0.62) >= 0.0;
+                    crossing[k] =
+                        crossing[k] || cb::detail::hermite_first_crossing(c.p0, c.p1, c.m0, c.m1,
+                                                                          in.h, 0.62, -0.62) >= 0.0;
               }
               x.swap(xn);
               v.swap(vn);

@@ -51,7 +51,7 @@ struct ChainCoefficients {
   // index j - 1, zeros past N.
   std::vector<double> tension;  // K_j phi_eq,j
 
-  double mass_of(int bead) const { return per_bead ? mass[bead - 1] : 1.0; }          // 1..N
+  double mass_of(int bead) const { return per_bead ? mass[bead - 1] : 1.0; }                // 1..N
   double stiffness_of(int spring) const { return per_bead ? stiffness[spring - 1] : 1.0; }  // 1..N
   // Spring 1..N's bounds; also for a Uniform chain.
   double upper_of(int spring) const { return per_bead ? upper[spring - 1] : threshold; }

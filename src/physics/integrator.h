@@ -1,4 +1,9 @@
-// Fixed-step classical RK4 for Eq. (dimless) with spring breaking, Eq. (break).
+// Fixed-step classical RK4 for Eq. (dimless) with spring breaking, Eq. (break), and for the
+// general chain of unequal beads and springs (chain.h, issue #21).
+//
+// The chain's constants are built once per Integrator (coefficients.h) and shared read-only by
+// every worker and block; the paper's chain takes the Uniform coefficient policy (its bits of
+// before), any other the PerBead one, on every kernel path (stencil.inc).
 //
 // Design note: the four stages are fused and evaluated tile by tile (a few thousand
 // beads with a 4-bead halo) so that one step streams psi and vel through memory once

@@ -28,15 +28,15 @@ using detail::kLanes;
 struct Lane {
   bool active = false;
   LaneJob job;
-  ChainCoefficients coef;    // the job's constants, built once when the lane takes it
+  ChainCoefficients coef;      // the job's constants, built once when the lane takes it
   double nearest_bound = 0.0;  // coef.nearest_bound()
-  bool checks = false;       // springs can break (the fused kernel's threshold test)
-  bool pull = false;         // the pull string can break
-  std::int64_t step = 0;     // steps done
-  std::vector<double> cuts;  // the current step's interval ends (empty: between steps)
-  std::size_t cut = 0;       // the interval being integrated
-  double from = 0.0;         // its start
-  bool plain = false;        // the step is one interval, with no kick and no breakpoint at its end
+  bool checks = false;         // springs can break (the fused kernel's threshold test)
+  bool pull = false;           // the pull string can break
+  std::int64_t step = 0;       // steps done
+  std::vector<double> cuts;    // the current step's interval ends (empty: between steps)
+  std::size_t cut = 0;         // the interval being integrated
+  double from = 0.0;           // its start
+  bool plain = false;  // the step is one interval, with no kick and no breakpoint at its end
   bool breakpoints_sorted = false;
   std::size_t next_breakpoint = 0;  // the first breakpoint after the current step's start
   std::size_t next_kick = 0;
@@ -129,8 +129,7 @@ void apply_kicks(Lane& lane, double up_to, double& v_end) {
 // Integrator::advance_interval's search for the earliest crossing in (ta, tb] of a lane whose
 // interval was integrated: springs by their Hermite cubic (the fused kernel's bound first), then
 // the pull string. Returns the spring (0: the string) and sets `first`, or -1.
-int first_crossing(Lane& lane, const LaneArrays& a, int k, bool near, double f_end,
-                   double& first) {
+int first_crossing(Lane& lane, const LaneArrays& a, int k, bool near, double f_end, double& first) {
   const ChainParams& p = lane.job.params;
   const int n = p.beads;
   const double ta = lane.ta, tb = lane.tb;
@@ -249,8 +248,8 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
       m0[k] = lane.m_max;
     }
     // The PerBead stencil as soon as one lane needs it (uniform lanes hold ones: same bits).
-    const bool per_bead =
-        std::any_of(std::begin(lanes), std::end(lanes), [](const Lane& l) { return l.active && l.coef.per_bead; });
+    const bool per_bead = std::any_of(std::begin(lanes), std::end(lanes),
+                                      [](const Lane& l) { return l.active && l.coef.per_bead; });
     in.inv_mass = per_bead ? a.inv_mass.data() : nullptr;
     in.stiffness = per_bead ? a.stiffness.data() : nullptr;
     in.x0 = a.x0.data(), in.v0 = a.v0.data();

@@ -10,6 +10,7 @@
 namespace cb::detail::avx2 {
 constexpr int kVec = 4;  // doubles a register
 #include "physics/stencil.inc"
+// The kernel, written on the stencil above.
 #include "physics/lanes_kernel.inc"
 }  // namespace cb::detail::avx2
 

@@ -11,6 +11,7 @@
 namespace cb::detail::avx512 {
 constexpr int kVec = 8;  // doubles a register
 #include "physics/stencil.inc"
+// The kernel, written on the stencil above.
 #include "physics/lanes_kernel.inc"
 }  // namespace cb::detail::avx512
 

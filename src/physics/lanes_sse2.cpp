@@ -10,5 +10,6 @@
 namespace cb::detail::sse2 {
 constexpr int kVec = 2;  // doubles a register
 #include "physics/stencil.inc"
+// The kernel, written on the stencil above.
 #include "physics/lanes_kernel.inc"
 }  // namespace cb::detail::sse2

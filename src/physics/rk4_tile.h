@@ -1,4 +1,5 @@
-// Internal: one fused RK4 step of Eq. (dimless) over a tile of beads.
+// Internal: one fused RK4 step of Eq. (dimless), or of the general chain by the coefficient
+// policy of stencil.inc, over a tile of beads.
 //
 // Design note: a 3-point stencil lets every stage of RK4 be computed on a shrinking
 // window, so a tile of T beads with a halo of 5 on each side yields the new state of its

@@ -11,6 +11,7 @@
 
 namespace cb::detail::avx512 {
 #include "physics/stencil.inc"
+// The kernel, written on the stencil above.
 #include "physics/rk4_tile_kernel.inc"
 }  // namespace cb::detail::avx512
 

@@ -10,5 +10,6 @@
 
 namespace cb::detail::sse2 {
 #include "physics/stencil.inc"
+// The kernel, written on the stencil above.
 #include "physics/rk4_tile_kernel.inc"
 }  // namespace cb::detail::sse2

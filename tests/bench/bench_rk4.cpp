@@ -99,6 +99,43 @@ void BM_FusedRK4(benchmark::State& state) {
                 static_cast<int>(state.range(4)));
 }
 
+// Args: {beads, simd, unequal}. Issue #21's goal: a chain of unequal masses and stiffnesses
+// (the PerBead policy of physics/stencil.inc: 1/m_j, K_j, K_{j+1} read at every bead) against
+// the homogeneous chain (unequal 0, the Uniform policy), one thread, the Integrator's own
+// choice of kernel and blocking, in the same run. The unequal chain: m_j = 1 + 0.5 sin(0.37 j),
+// K_j = 1 + 0.4 cos(0.11 j), unbreakable.
+void BM_UnequalRK4(benchmark::State& state) {
+  const int beads = static_cast<int>(state.range(0));
+  const auto simd = static_cast<cb::SimdPath>(state.range(1));
+  cb::ChainParams p;
+  p.beads = beads;
+  p.gamma = kGamma;
+  if (state.range(2) != 0) {
+    p.mass.resize(beads);
+    p.stiffness.resize(beads);
+    for (int j = 1; j <= beads; ++j) {
+      p.mass[j - 1] = 1.0 + 0.5 * std::sin(0.37 * j);
+      p.stiffness[j - 1] = 1.0 + 0.4 * std::cos(0.11 * j);
+    }
+  }
+  if (!cb::simd_supported(simd)) {
+    state.SkipWithError((std::string("no ") + cb::simd_name(simd) + " on this CPU").c_str());
+    return;
+  }
+  cb::Integrator sim(p, ramp_forcing(), {kDt, 1, simd});
+  FusedSim fused{sim};
+  warm_up(fused);
+  const int steps = p.beads >= 1'000'000 ? 16 : steps_per_iteration(p.beads);
+  for (auto _ : state) {
+    if (!sim.advance_to(sim.state().step + steps)) {
+      state.SkipWithError(sim.error().c_str());
+      break;
+    }
+  }
+  benchmark::DoNotOptimize(sim.state().psi.back());
+  set_counters(state, p.beads, steps, 32);
+}
+
 // Args: {beads, simd}. BM_FusedRK4 on one thread with the small-chain kernel turned off
 // (IntegratorOptions::tiled_only): the tiled kernel it replaces, measured in the same run.
 void BM_FusedTiledRK4(benchmark::State& state) {
@@ -245,6 +282,10 @@ BENCHMARK(BM_FusedRK4)
     ->ArgsProduct({{10'000'000}, {1}, {0}, {1}, {2, 4, 16}})  // the block length's trade-off
     ->Args({1'000'000, 1, 1, 2, 1})
     ->Args({1'000'000, 1, 1, 2, 8})
+    ->Apply(common);
+BENCHMARK(BM_UnequalRK4)
+    ->ArgNames({"N", "simd", "unequal"})
+    ->ArgsProduct({{30, 1'000, 10'000'000}, {1, 2}, {0, 1}})
     ->Apply(common);
 BENCHMARK(BM_FusedTiledRK4)
     ->ArgNames({"N", "simd"})
