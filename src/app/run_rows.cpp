@@ -1,6 +1,8 @@
 #include "app/run_rows.h"
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <memory>
 
 #include "exact/continuum.h"
@@ -65,7 +67,7 @@ RunOutcome run_rk4(const SceneDesc& scene, const RunRequest& req, RowSink* sink)
     row.f = sim.force_now();
     for (int j = 1; j <= n; ++j) phi[j - 1] = extension(s, j);
     row.psi = req.psi ? &s.psi : nullptr;
-    set_energy(row, energy(s), n);
+    set_energy(row, energy(s, scene.chain), n);
     sink->row(row);
   };
   // One run loop (physics/run_loop.h): t_end, after_break past the first break, the stop flag.
@@ -88,7 +90,7 @@ RunOutcome run_rk4(const SceneDesc& scene, const RunRequest& req, RowSink* sink)
   out.steps = sim.state().step;
   out.tau_end = sim.state().tau;
   out.breaks = sim.state().breaks;
-  out.books = energy_books(sim.state());
+  out.books = energy_books(sim.state(), scene.chain);
   out.simd = sim.simd();
   return out;
 }
@@ -159,6 +161,19 @@ void continuum_profile(int beads, double tau, const std::function<double(double)
   }
 }
 
+namespace {
+std::string shortest(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  for (int digits = 1; digits < 17; ++digits) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.*g", digits, v);
+    if (std::strtod(b, nullptr) == v) return b;
+  }
+  return buf;
+}
+}  // namespace
+
 void check_run_request(const SceneDesc& scene, const RunRequest& request) {
   if (request.every < 1)
     throw SceneError("--every " + std::to_string(request.every) + ": must be 1 or more");
@@ -173,6 +188,14 @@ void check_run_request(const SceneDesc& scene, const RunRequest& request) {
                      ": the continuum formula Eq. (sum) is the paper's large-N limit of the "
                      "uniform chain; this chain has unequal chain.mass or chain.stiffness. Use "
                      "--solver exact (any linear chain) or rk4");
+  // Issue #24: the exact and continuum formulas superpose normal modes, which a chain with
+  // anharmonic springs does not have.
+  if (request.solver != "rk4" && scene.chain.anharmonic())
+    throw SceneError(scene.path + ": --solver " + request.solver +
+                     " needs a linear chain (its solution is a sum of normal modes); this chain "
+                     "has anharmonic springs (chain.fput_alpha = " +
+                     shortest(scene.chain.fput_alpha) + ", fput_beta = " +
+                     shortest(scene.chain.fput_beta) + "). Use --solver rk4, or set both to 0");
 }
 
 RunOutcome run_scene(const SceneDesc& scene, const RunRequest& request, RowSink* sink) {

@@ -88,6 +88,7 @@ const std::vector<FigureEntry>& figure_entries() {
       {"fig5", figure_5},
       {"breaking_map", figure_breaking_map},
       {"one_body_map", figure_one_body_map},
+      {"fput_map", figure_fput_map},
   };
   return entries;
 }

@@ -22,6 +22,10 @@
 //   break_on = "abs"      # "abs": |phi_j| >= phi_c (the paper); "stretch": phi_j >= phi_c
 //   pull_string = false   # pull through a massless string that breaks at f >= phi_c;
 //                         # requires threshold (Fig. 1, the one-ball experiment)
+//   fput_alpha = 0.0      # a, anharmonic springs (issue #24, FPUT): spring j's tension is
+//   fput_beta = 0.0       # b   K_j (phi + a phi^2 + b phi^3); default 0 (harmonic). The tension
+//                         # must grow with |phi| up to the threshold (or everywhere without one);
+//                         # RK4 only (exact and continuum refuse a nonlinear chain)
 //
 //   [drive]                        # required; f(tau) = g(tau - t0) for tau >= t0, 0 before
 //   type = "ramp"         # step | ramp | sine | impulses | table | expr (required)

@@ -31,6 +31,8 @@ constexpr KeySpec kSchema[] = {
     {"chain", "stiffness", Kind::Coefficients, "stiffness = { value = 4.0, from = 1, to = 15 }"},
     {"chain", "break_on", Kind::String, "break_on = \"abs\""},
     {"chain", "pull_string", Kind::Bool, "pull_string = false"},
+    {"chain", "fput_alpha", Kind::Number, "fput_alpha = 0.0"},
+    {"chain", "fput_beta", Kind::Number, "fput_beta = 0.5"},
     {"drive", "type", Kind::String, "type = \"ramp\""},
     {"drive", "beta", Kind::Number, "beta = 0.02"},
     {"drive", "amplitude", Kind::Number, "amplitude = 1.0"},
