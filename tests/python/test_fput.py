@@ -44,3 +44,11 @@ def test_formula_solvers_refuse_a_nonlinear_chain(solver):
     scene = chainbreak.Scene.from_dict(TABLES)
     with pytest.raises(chainbreak.SceneError, match="needs a linear chain"):
         chainbreak.run(scene, solver=solver)
+
+
+def test_exact_and_continuum_objects_refuse_a_nonlinear_chain():
+    scene = chainbreak.Scene.from_dict(TABLES)
+    with pytest.raises(chainbreak.SceneError, match="needs a linear chain"):
+        chainbreak.exact(scene)
+    with pytest.raises(chainbreak.SceneError, match="needs a linear chain"):
+        chainbreak.continuum(scene)
