@@ -70,8 +70,7 @@ void sample_overlay(const ChainState& state, const ChainParams& params, RunExten
     e.phi_min = std::min(e.phi_min, phi);
     e.phi_max = std::max(e.phi_max, phi);
   }
-  const EnergyParts parts = params.hanging() ? energy(state, params) : energy(state);  // weight
-  e.energy_max = std::max(e.energy_max, per_particle(parts.total(), params.beads));
+  e.energy_max = std::max(e.energy_max, per_particle(energy(state, params).total(), params.beads));
 }
 
 }  // namespace

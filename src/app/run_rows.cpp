@@ -1,6 +1,8 @@
 #include "app/run_rows.h"
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <memory>
 
 #include "exact/continuum.h"
@@ -165,6 +167,19 @@ void continuum_profile(int beads, double tau, const std::function<double(double)
   }
 }
 
+namespace {
+std::string shortest(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  for (int digits = 1; digits < 17; ++digits) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.*g", digits, v);
+    if (std::strtod(b, nullptr) == v) return b;
+  }
+  return buf;
+}
+}  // namespace
+
 void check_run_request(const SceneDesc& scene, const RunRequest& request) {
   if (request.every < 1)
     throw SceneError("--every " + std::to_string(request.every) + ": must be 1 or more");
@@ -183,6 +198,14 @@ void check_run_request(const SceneDesc& scene, const RunRequest& request) {
                      ": the continuum formula Eq. (sum) is the paper's large-N limit of the "
                      "uniform chain; this chain has unequal chain.mass or chain.stiffness. Use "
                      "--solver exact (any linear chain) or rk4");
+  // Issue #24: the exact and continuum formulas superpose normal modes, which a chain with
+  // anharmonic springs does not have.
+  if (request.solver != "rk4" && scene.chain.anharmonic())
+    throw SceneError(scene.path + ": --solver " + request.solver +
+                     " needs a linear chain (its solution is a sum of normal modes); this chain "
+                     "has anharmonic springs (chain.fput_alpha = " +
+                     shortest(scene.chain.fput_alpha) + ", fput_beta = " +
+                     shortest(scene.chain.fput_beta) + "). Use --solver rk4, or set both to 0");
 }
 
 RunOutcome run_scene(const SceneDesc& scene, const RunRequest& request, RowSink* sink) {

@@ -48,7 +48,8 @@ LaneGroups lane_groups(const std::vector<SceneDesc>& scenes, const std::string& 
   std::vector<int> lengths;
   for (std::size_t i = 0; i < scenes.size(); ++i) {
     const int n = scenes[i].chain.beads;
-    if (solver != "rk4" || n > kMaxLaneBeads) {
+    // The lanes kernel has the harmonic stencil only: anharmonic chains run one by one.
+    if (solver != "rk4" || n > kMaxLaneBeads || scenes[i].chain.anharmonic()) {
       g.singles.push_back(i);
       continue;
     }

@@ -90,6 +90,7 @@ const std::vector<FigureEntry>& figure_entries() {
       {"one_body_map", figure_one_body_map},
       {"gravity_map", figure_gravity_map},
       {"hanging_map", figure_hanging_map},
+      {"fput_map", figure_fput_map},
   };
   return entries;
 }

@@ -52,11 +52,15 @@ Figure figure_one_body_map(const FigureOptions&);
 // spring of a hanging N = 30 chain breaks first against beta.
 Figure figure_gravity_map(const FigureOptions&);
 Figure figure_hanging_map(const FigureOptions&);
+// Anharmonic springs (figures_fput.cpp, issue #24): first break against beta, RK4.
+Figure figure_fput_map(const FigureOptions&);
 
 // The breaking map's range and its three thresholds of Fig. 4(c), for N = 30.
 inline constexpr int kMapBeads = 30;
 inline constexpr double kMapZetaMax = 250.0;  // past 8N = 240
 inline constexpr double kFig4cThresholds[3] = {40.0, 100.0, 160.0};
+// The anharmonic map's threshold, for every b (below b = -0.1's flat point 1.826).
+inline constexpr double kFputMapThreshold = 1.5;
 // The one-body map's range of beta (log scale).
 inline constexpr double kOneBodyBetaLo = 0.01, kOneBodyBetaHi = 10.0;
 // The gravity map's range (linear beta: the windows m = 1, 2, 3 and the jerk; G up to past the

@@ -76,6 +76,7 @@ struct OverlayData {
 
   // ---- Exact lines (ExactChain) for the same springs ----
   bool exact = false;             // false: no exact lines (chain too long for the exact solver)
+  bool anharmonic = false;        // anharmonic springs (issue #24): no exact solution, said so
   std::vector<double> exact_tau;  // frame times and kExactPerFrame - 1 points between
   std::vector<double> exact_phi[kPlottedSprings];
   // The exact solution is the unbroken chain's: the lines stop at the first break (the last

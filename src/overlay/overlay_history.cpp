@@ -70,7 +70,9 @@ OverlayHistory::OverlayHistory(const ChainParams& params, const DriveDesc& drive
 
   d.strain_scale = setup.strain_scale;
   d.spacetime_columns = std::min(params.beads, kMaxSpacetimeColumns);
-  d.exact = setup.exact && params.beads <= kExactMaxBeads;
+  // A chain with anharmonic springs has no normal modes, so no exact solution (issue #24).
+  d.anharmonic = params.anharmonic();
+  d.exact = setup.exact && params.beads <= kExactMaxBeads && !d.anharmonic;
   if (d.exact) exact_ = std::make_unique<ExactChain>(params, drive);
   modes_ = ModeBasis(params, std::min(params.beads, kMaxModes));
 }
@@ -91,8 +93,7 @@ void OverlayHistory::record(std::int64_t frame, const ChainState& state, double 
   d.tau = state.tau;
   if (setup_.omega0 > 0) d.seconds = state.tau / setup_.omega0;
   d.force = force;
-  // A hanging chain's energy counts its weight (physics/energy.h); else the paper's.
-  const EnergyParts e = params_.hanging() ? energy(state, params_) : energy(state);
+  const EnergyParts e = energy(state, params_);  // m_j, K_j and anharmonic springs
   d.energy = per_particle(e.total(), n);
   d.kinetic = per_particle(e.kinetic, n);
   d.potential = per_particle(e.potential, n);

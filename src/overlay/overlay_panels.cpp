@@ -141,7 +141,9 @@ void draw_phi_plot(Canvas& c) {
       entries.push_back({c.theme.series[s], "\u03C6" + subscript(d.springs[s]), true});
     legend(c, a, a.y + 0.3f * fs, entries);
     text(c, c.fonts.sans, a.x + 0.6f * fs, a.y + 1.65f * fs, c.theme.text_dim,
-         d.exact ? "dots: RK4 \u00B7 lines: exact" : "dots: RK4 (no exact lines above N = 1024)",
+         d.exact        ? "dots: RK4 \u00B7 lines: exact"
+         : d.anharmonic ? "dots: RK4 (no exact lines: anharmonic springs have no normal modes)"
+                        : "dots: RK4 (no exact lines above N = 1024)",
          0.0f, 0.8f);
     return;
   }

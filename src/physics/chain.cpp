@@ -44,4 +44,24 @@ void ChainParams::normalize() {
   if (all_equal(thresholds, threshold)) thresholds.clear();
 }
 
+double fput_stiffest_slope(double phi_c, double a, double b) {
+  if (!std::isfinite(phi_c)) return 1.0;
+  // A parabola in phi: its largest value on [-phi_c, phi_c] is at an end, or at its vertex
+  // -a / (3 b) when b < 0 and the vertex lies inside.
+  double s = std::max(fput_slope(phi_c, a, b), fput_slope(-phi_c, a, b));
+  if (b < 0.0 && std::abs(a / (3.0 * b)) < phi_c) s = std::max(s, fput_slope(-a / (3.0 * b), a, b));
+  return std::max(s, 1.0);
+}
+
+double fput_first_flat(double a, double b) {
+  // Roots of 3 b phi^2 + 2 a phi + 1 = 0.
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  if (b == 0.0) return a == 0.0 ? kInf : 1.0 / (2.0 * std::abs(a));
+  const double disc = a * a - 3.0 * b;
+  if (disc < 0.0) return kInf;
+  const double r = std::sqrt(disc);
+  const double p1 = (-a + r) / (3.0 * b), p2 = (-a - r) / (3.0 * b);
+  return std::min(std::abs(p1), std::abs(p2));
+}
+
 }  // namespace cb

@@ -42,11 +42,18 @@ struct ChainParams {
   // acting on bead j as + m_j G. With G > 0 the wall is a ceiling, the chain hangs from it and
   // starts at rest in its hanging equilibrium (equilibrium_extension).
   double gravity = 0.0;
+  // Anharmonic springs (issue #24, Fermi-Pasta-Ulam-Tsingou): the tension of spring j is
+  // K_j (phi + a phi^2 + b phi^3), its potential K_j (phi^2/2 + a phi^3/3 + b phi^4/4).
+  // a = b = 0 is the harmonic chain (the same kernels and bits).
+  double fput_alpha = 0.0;  // a
+  double fput_beta = 0.0;   // b
 
   // Some spring can break (a finite threshold somewhere).
   bool breakable() const;
   // Every m_j = K_j = 1: the paper's Eq. (dimless), whatever the thresholds.
   bool uniform_dynamics() const { return mass.empty() && stiffness.empty(); }
+  // Some spring's tension is not linear in phi (a or b not 0).
+  bool anharmonic() const { return fput_alpha != 0.0 || fput_beta != 0.0; }
   // Every spring has the threshold `threshold`.
   bool uniform_thresholds() const { return thresholds.empty(); }
   double mass_of(int bead) const { return mass.empty() ? 1.0 : mass[bead - 1]; }  // 1..N
@@ -71,6 +78,24 @@ struct ChainParams {
   // `threshold` for thresholds).
   void normalize();
 };
+
+// The tension of a spring of unit stiffness at extension phi, phi + a phi^2 + b phi^3, its slope
+// 1 + 2 a phi + 3 b phi^2 and its potential phi^2/2 + a phi^3/3 + b phi^4/4 (issue #24).
+inline double fput_tension(double phi, double a, double b) {
+  return phi * (1.0 + phi * (a + b * phi));
+}
+inline double fput_slope(double phi, double a, double b) {
+  return 1.0 + phi * (2.0 * a + 3.0 * b * phi);
+}
+inline double fput_potential(double phi, double a, double b) {
+  return phi * phi * (0.5 + phi * (a / 3.0 + 0.25 * b * phi));
+}
+
+// The largest slope T'(phi) = 1 + 2 a phi + 3 b phi^2 over |phi| <= phi_c (at phi = 0 for an
+// infinite phi_c): the stiffest a spring gets before it breaks.
+double fput_stiffest_slope(double phi_c, double a, double b);
+// The smallest |phi| at which T'(phi) = 0 (the tension stops growing), or +inf if it never does.
+double fput_first_flat(double a, double b);
 
 struct BreakEvent {
   int spring = 0;         // 1..N, or 0 for the pull string

@@ -5,7 +5,8 @@
 
 namespace cb {
 
-ChainCoefficients chain_coefficients(const ChainParams& params, bool per_bead_always) {
+ChainCoefficients chain_coefficients(const ChainParams& params, bool per_bead_always,
+                                     bool anharmonic_always) {
   ChainParams p = params;
   p.normalize();
   ChainCoefficients c;
@@ -14,6 +15,9 @@ ChainCoefficients chain_coefficients(const ChainParams& params, bool per_bead_al
   c.threshold = p.threshold;
   c.stretch_only = p.break_on == BreakMode::Stretch;
   c.checks = p.breakable() && p.min_threshold() > 0.0;
+  c.anharmonic = anharmonic_always || p.anharmonic();
+  c.fput_alpha = p.fput_alpha;
+  c.fput_beta = p.fput_beta;
   c.per_bead = per_bead_always || !p.uniform_dynamics() || !p.uniform_thresholds() || p.hanging();
   if (!c.per_bead) return c;
   constexpr double kInf = std::numeric_limits<double>::infinity();

@@ -30,6 +30,10 @@ inline constexpr int kCoefficientPad = 16;
 struct ChainCoefficients {
   int beads = 0;
   bool per_bead = false;  // false: the Uniform policy (no arrays)
+  // Anharmonic springs (issue #24): the Anharmonic<Uniform or PerBead> policy, whose tension is
+  // K_j (phi + a phi^2 + b phi^3) with a = fput_alpha, b = fput_beta.
+  bool anharmonic = false;
+  double fput_alpha = 0.0, fput_beta = 0.0;
   // Springs can break: the kernels collect candidates (some finite bound).
   bool checks = false;
   // The Uniform policy's rule: |phi_j| >= threshold (phi_j >= threshold when stretch_only).
@@ -70,6 +74,9 @@ struct ChainCoefficients {
 
 // The coefficients of `params`. per_bead_always: the PerBead policy even for a uniform chain
 // (its arrays of ones then give the Uniform bits; tests compare the two).
-ChainCoefficients chain_coefficients(const ChainParams& params, bool per_bead_always = false);
+// anharmonic_always: the Anharmonic policy even for a = b = 0 (which then gives the harmonic
+// bits; tests compare the two).
+ChainCoefficients chain_coefficients(const ChainParams& params, bool per_bead_always = false,
+                                     bool anharmonic_always = false);
 
 }  // namespace cb

@@ -9,8 +9,10 @@ namespace cb {
 namespace {
 
 // m_j and K_j for bead / spring j at index j - 1: null for the uniform chain (all 1).
-template <bool kWeighted>
-EnergyParts energy_of(const ChainState& state, const double* mass, const double* stiffness) {
+// a, b: the anharmonic springs' tension coefficients (issue #24), read when kAnharmonic.
+template <bool kWeighted, bool kAnharmonic = false>
+EnergyParts energy_of(const ChainState& state, const double* mass, const double* stiffness,
+                      double a = 0.0, double b = 0.0) {
   // Both sums in one pass, each in its own order (bead 1 to N, the kinetic over all beads, the
   // potential over intact springs): the same bits as one loop per sum, but the two chains of
   // dependent additions overlap and the state streams through memory once.
@@ -31,7 +33,9 @@ EnergyParts energy_of(const ChainState& state, const double* mass, const double*
       ++broken;
     } else {
       const double phi = right - left;  // extension(state, j)
-      if constexpr (kWeighted)
+      if constexpr (kAnharmonic)
+        e.potential += stiffness[j - 1] * fput_potential(phi, a, b);
+      else if constexpr (kWeighted)
         e.potential += 0.5 * stiffness[j - 1] * phi * phi;
       else
         e.potential += 0.5 * phi * phi;
@@ -83,13 +87,16 @@ EnergyParts energy(const ChainState& state, const ChainParams& params) {
     e.reference = hanging_equilibrium_energy(params);
     return e;
   }
-  if (params.uniform_dynamics()) return energy(state);
+  if (params.uniform_dynamics() && !params.anharmonic()) return energy(state);
   const int n = static_cast<int>(state.psi.size());
   std::vector<double> mass(n), stiffness(n);
   for (int j = 1; j <= n; ++j) {
     mass[j - 1] = params.mass_of(j);
     stiffness[j - 1] = params.stiffness_of(j);
   }
+  if (params.anharmonic())
+    return energy_of<true, true>(state, mass.data(), stiffness.data(), params.fput_alpha,
+                                 params.fput_beta);
   return energy_of<true>(state, mass.data(), stiffness.data());
 }
 

@@ -18,7 +18,8 @@ struct EnergyParts {
 
 EnergyParts energy(const ChainState& state);
 // Eq. (energy) of a chain of Eq. (general): kinetic sum m_j psi_j'^2 / 2, potential sum over
-// intact springs K_j phi_j^2 / 2. For a chain with m_j = K_j = 1 the bits of energy(state).
+// intact springs K_j phi_j^2 / 2 (K_j (phi^2/2 + a phi^3/3 + b phi^4/4) for anharmonic springs,
+// issue #24). For a harmonic chain with m_j = K_j = 1 the bits of energy(state).
 // A hanging chain's (params.gravity > 0) adds the weight's potential and counts from the
 // hanging equilibrium (EnergyParts); `state` then holds psi (Integrator::state()), not u.
 EnergyParts energy(const ChainState& state, const ChainParams& params);

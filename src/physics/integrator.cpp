@@ -125,7 +125,7 @@ struct Integrator::Impl {
 
 Integrator::Integrator(const ChainParams& params, Forcing forcing, IntegratorOptions options)
     : params_(params),
-      coef_(chain_coefficients(params, options.per_bead_policy)),
+      coef_(chain_coefficients(params, options.per_bead_policy, options.anharmonic_policy)),
       forcing_(std::move(forcing)),
       options_(options) {
   assert(params_.beads >= 1 && options_.dt > 0.0);
@@ -571,7 +571,11 @@ void Integrator::break_spring(int spring, double tau) {
   // The spring's elastic energy K_j phi_j^2 / 2 leaves with it ((0.5 1) phi == 0.5 phi).
   double phi = extension(state_, spring);
   if (params_.hanging()) phi += eq_phi_[spring - 1];  // state_ holds u = psi - psi_eq
-  state_.break_loss += 0.5 * coef_.stiffness_of(spring) * phi * phi;
+  if (coef_.anharmonic)  // K_j (phi^2/2 + a phi^3/3 + b phi^4/4), issue #24
+    state_.break_loss +=
+        coef_.stiffness_of(spring) * fput_potential(phi, coef_.fput_alpha, coef_.fput_beta);
+  else
+    state_.break_loss += 0.5 * coef_.stiffness_of(spring) * phi * phi;
   state_.broken.insert(std::lower_bound(state_.broken.begin(), state_.broken.end(), spring),
                        spring);
 }
@@ -686,6 +690,19 @@ double rk4_stability_limit_for(double lambda_max, double gamma) {
 double rk4_stability_limit(const ChainParams& params) {
   ChainParams p = params;
   p.normalize();  // arrays of ones: the uniform chain's own answer
+  if (p.anharmonic()) {
+    // A nonlinear chain has no fixed modes: RK4 is held to the linearisation at the stiffest
+    // extension a spring can reach before it breaks, K_j T'(phi) with |phi| <= phi_c,j (the
+    // largest T' = 1 + 2 a phi + 3 b phi^2 there; issue #24). An unbreakable spring has no such
+    // bound and is linearised at phi = 0.
+    std::vector<double> k(static_cast<std::size_t>(p.beads));
+    for (int j = 1; j <= p.beads; ++j)
+      k[j - 1] =
+          p.stiffness_of(j) * fput_stiffest_slope(p.threshold_of(j), p.fput_alpha, p.fput_beta);
+    p.stiffness = std::move(k);
+    p.fput_alpha = p.fput_beta = 0.0;
+    return rk4_stability_limit_for(largest_eigenvalue(p) * (1.0 + 1e-12), p.gamma);
+  }
   if (p.uniform_dynamics()) return rk4_stability_limit(p.beads, p.gamma);
   // A relative margin of 1e-12 on lambda_max covers the Sturm count's rounding.
   return rk4_stability_limit_for(largest_eigenvalue(p) * (1.0 + 1e-12), p.gamma);

@@ -48,6 +48,9 @@ struct IntegratorOptions {
   // Always take the PerBead coefficient policy (stencil.inc), also for a chain whose arrays are
   // all ones: the same bits as the Uniform policy, which tests check.
   bool per_bead_policy = false;
+  // Always take the Anharmonic coefficient policy (issue #24), also for a = b = 0: the same bits
+  // as the harmonic chain, which tests check.
+  bool anharmonic_policy = false;
 };
 
 inline constexpr int kDefaultBlockSteps = 8;

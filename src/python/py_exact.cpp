@@ -30,10 +30,19 @@ py::array_t<double> over_tau(const TauArray& tau, int beads, Fill&& fill) {
   return out;
 }
 
+// The scene, once check_run_request (the CLI's one check of a solver request) accepts it for
+// `solver`: the same refusals as run(solver=...), e.g. of anharmonic springs (issue #24).
+SceneDesc checked_for(SceneDesc scene, const char* solver) {
+  RunRequest request;
+  request.solver = solver;
+  check_run_request(scene, request);
+  return scene;
+}
+
 class Exact {
  public:
   explicit Exact(const Scene& source)
-      : scene_(source.resolve()), chain_(scene_.chain, scene_.drive) {}
+      : scene_(checked_for(source.resolve(), "exact")), chain_(scene_.chain, scene_.drive) {}
   py::array_t<double> phi(const TauArray& tau) const {
     return over_tau(tau, chain_.beads(),
                     [&](double t, std::vector<double>& v) { chain_.phi(t, v); });

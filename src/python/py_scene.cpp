@@ -205,6 +205,13 @@ void bind_scene(py::module_& m) {
           },
           "phi_c,j of spring 1..N, a numpy array (None for an unbreakable chain); `threshold` "
           "is their smallest.")
+      // Issue #24's anharmonic springs: tension K_j (phi + a phi^2 + b phi^3).
+      .def_property_readonly(
+          "fput_alpha", [](const Scene& s) { return s.resolve().chain.fput_alpha; },
+          "a of the springs' tension K_j (phi + a phi^2 + b phi^3); 0 for harmonic springs.")
+      .def_property_readonly(
+          "fput_beta", [](const Scene& s) { return s.resolve().chain.fput_beta; },
+          "b of the springs' tension K_j (phi + a phi^2 + b phi^3); 0 for harmonic springs.")
       .def_property_readonly(
           "drive",
           [](const Scene& s) { return std::string(drive_type_name(s.resolve().drive.type)); })

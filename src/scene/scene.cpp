@@ -28,6 +28,10 @@
 //                         # requires threshold (Fig. 1, the one-ball experiment)
 //   gravity = 0.0         # G = m g / (K l) >= 0 (issue #22): the chain hangs from a ceiling and
 //                         # starts in its hanging equilibrium; a force (newtons for SI input)
+//   fput_alpha = 0.0      # a, anharmonic springs (issue #24, FPUT): spring j's tension is
+//   fput_beta = 0.0       # b   K_j (phi + a phi^2 + b phi^3); default 0 (harmonic). The tension
+//                         # must grow with |phi| up to the threshold (or everywhere without one);
+//                         # RK4 only (exact and continuum refuse a nonlinear chain)
 //
 //   [drive]                        # required; f(tau) = g(tau - t0) for tau >= t0, 0 before
 //   type = "ramp"         # step | ramp | sine | impulses | table | expr (required)

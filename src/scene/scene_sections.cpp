@@ -182,6 +182,9 @@ ChainParams read_chain(const SceneReader& r, std::optional<Units>& units, const 
   p.pull_string = r.boolean("chain", "pull_string").value_or(false);
   // The weight of a unit-mass bead, a force: newtons with input = "si", like the threshold.
   if (const auto g = r.number("chain", "gravity")) p.gravity = c.force(*g);
+  // Anharmonic springs (issue #24): dimensionless in every unit system (phi is in units of l).
+  p.fput_alpha = r.number("chain", "fput_alpha").value_or(0.0);
+  p.fput_beta = r.number("chain", "fput_beta").value_or(0.0);
   return p;
 }
 

@@ -12,6 +12,7 @@
 // Every problem is noted (scene_problems.h), not thrown at the first: a check whose key, or
 // a key it depends on, already has a problem stays silent, since its value is then a
 // stand-in.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -51,6 +52,8 @@ double round_value_below(double v) {
 // bounds the fastest mode with the chain's masses and stiffness, once it is on main; this
 // uniform-chain bound is too large for a chain stiffer or lighter than 1 somewhere.
 double stability_limit(const ChainParams& chain) {
+  // Anharmonic springs: linearised at the stiffest extension below the threshold (issue #24).
+  if (chain.anharmonic()) return rk4_stability_limit(chain);
   return rk4_stability_limit(chain.beads, chain.gamma);
 }
 
@@ -131,6 +134,7 @@ class Checker {
   bool units() const;  // false when a unit is wrong (then converted numbers are not meaningful)
   void chain() const;
   void gravity() const;
+  void anharmonic() const;
   void coefficients(const std::string& key, const char* element, const char* what,
                     const std::vector<double>& values, Quantity q) const;
   void drive() const;
@@ -188,6 +192,14 @@ void Checker::chain() const {
          "chain.pull_string = true needs chain.threshold (the string breaks when f reaches "
          "it); add e.g. threshold = 1.0 to [chain], or set pull_string = false");
   gravity();
+  anharmonic();
+  // The hanging equilibrium of anharmonic springs solves K_j (phi + a phi^2 + b phi^3) = load
+  // per spring (issue #24 with #22): not built yet, so the pair is refused rather than run wrong.
+  if (scene_.chain.hanging() && scene_.chain.anharmonic())
+    fail("chain.gravity",
+         "chain.gravity with anharmonic springs (chain.fput_alpha, chain.fput_beta) is not "
+         "supported yet: the hanging equilibrium of such springs is not computed; use "
+         "gravity = 0, or fput_alpha = fput_beta = 0");
 }
 
 // chain.gravity = G >= 0, and light enough that the hanging equilibrium breaks no spring:
@@ -223,6 +235,38 @@ void Checker::gravity() const {
              ", at or beyond its threshold " + shown(p.threshold_of(weakest), Quantity::Force) +
              ", before any pull; use gravity < " + shown(most, Quantity::Force) +
              " or raise chain.threshold");
+}
+
+// Anharmonic springs (issue #24): the tension phi + a phi^2 + b phi^3 must grow with phi for
+// every |phi| below the largest threshold (everywhere for an unbreakable chain). Where its slope
+// 1 + 2 a phi + 3 b phi^2 reaches 0 the spring softens into a maximum of tension that no pull can
+// pass: the chain has no equilibrium beyond it, and RK4's linearisation is unstable there.
+void Checker::anharmonic() const {
+  const ChainParams& p = scene_.chain;
+  finite("chain.fput_alpha", p.fput_alpha);
+  finite("chain.fput_beta", p.fput_beta);
+  if (!p.anharmonic() || failed({"chain.fput_alpha", "chain.fput_beta", "chain.threshold"})) return;
+  double reach = p.threshold;
+  for (double t : p.thresholds) reach = std::max(reach, t);
+  const double flat = fput_first_flat(p.fput_alpha, p.fput_beta);
+  if (flat >= reach) return;
+  const std::string key = given("chain.fput_beta") ? "chain.fput_beta" : "chain.fput_alpha";
+  const double a = p.fput_alpha, b = p.fput_beta;
+  // The side on which the slope vanishes first, for the message.
+  const double at =
+      std::abs(fput_slope(flat, a, b)) <= std::abs(fput_slope(-flat, a, b)) ? flat : -flat;
+  std::string what =
+      "chain.fput_alpha = " + format_exact(a) + ", fput_beta = " + format_exact(b) +
+      ": the tension phi + a phi^2 + b phi^3 stops growing at phi = " + format_approx(at) +
+      " (its slope 1 + 2 a phi + 3 b phi^2 is 0 there; " + "tension " +
+      format_approx(fput_tension(at, a, b)) + ")";
+  what += std::isfinite(reach) ? ", below the threshold phi_c = " + format_approx(reach)
+                               : " and the chain has no threshold";
+  what +=
+      "; a spring stretched past it would soften and the chain has no equilibrium under a "
+      "larger load. Use a threshold below " +
+      format_approx(flat) + ", or a and b with a^2 < 3 b (e.g. fput_beta = 0.5, fput_alpha = 0)";
+  fail(key, what);
 }
 
 // An array of the chain: one value per bead or spring, each finite and > 0.
@@ -340,7 +384,9 @@ void Checker::integrator() const {
              format_approx(kMaxRunSteps) + "; raise dt (e.g. dt = 0.01) or lower t_end");
 
   // Beyond this dt RK4 amplifies the fastest mode every step and the run blows up.
-  if (failed({"chain", "chain.beads", "chain.gamma", "chain.mass", "chain.stiffness"})) return;
+  if (failed({"chain", "chain.beads", "chain.gamma", "chain.mass", "chain.stiffness",
+              "chain.threshold", "chain.fput_alpha", "chain.fput_beta"}))
+    return;
   const double limit = stability_limit(chain);
   if (d.dt <= limit) return;
   const double limit_in_scene = limit / c_.omega0;  // seconds for SI input
@@ -357,6 +403,8 @@ void Checker::integrator() const {
   what += si ? "tau = " + format_approx(limit) + " (" + format_approx(limit_in_scene) + " s)"
              : format_approx(limit);
   what += " for N = " + std::to_string(chain.beads) + " and gamma = " + format_approx(chain.gamma);
+  if (chain.anharmonic())
+    what += " (anharmonic springs: linearised at their stiffest extension below the threshold)";
   what += dt_given ? "; use dt <= " : "; set dt in [integrator], at most ";
   what += format_approx(floor_4_digits(limit_in_scene)) + unit +
           ", e.g. dt = " + format_exact(round_value_below(limit_in_scene / 2.0)) +

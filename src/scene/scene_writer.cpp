@@ -119,6 +119,8 @@ std::string write_scene(const SceneDesc& scene) {
   out << "break_on = " << quoted(c.break_on == BreakMode::Abs ? "abs" : "stretch") << "\n";
   out << "pull_string = " << (c.pull_string ? "true" : "false") << "\n";
   if (c.hanging()) out << "gravity = " << number(c.gravity) << "\n";
+  if (c.fput_alpha != 0.0) out << "fput_alpha = " << number(c.fput_alpha) << "\n";
+  if (c.fput_beta != 0.0) out << "fput_beta = " << number(c.fput_beta) << "\n";
 
   write_drive(out, scene);
 

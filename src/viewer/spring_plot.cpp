@@ -29,7 +29,9 @@ void SpringPlot::update_exact(const Session& session, int spring) {
   // An expression drive is convolved numerically, too slow to follow a live run.
   if (!exact_tried_) {
     exact_tried_ = true;
-    if (scene.chain.beads <= kExactMaxBeads && scene.drive.type != DriveType::Expr)
+    // Anharmonic springs (issue #24) have no normal modes, so no exact line.
+    if (scene.chain.beads <= kExactMaxBeads && scene.drive.type != DriveType::Expr &&
+        !scene.chain.anharmonic())
       exact_ = std::make_unique<ExactChain>(scene.chain, scene.drive);
   }
   if (!exact_) return;

@@ -64,10 +64,13 @@ cb::Forcing ramp_forcing() {
 // -1 the Integrator's default). At N >= 1e6 an iteration is 16 steps (two blocks of the
 // default 8), blocked or not.
 void run_fused_rk4(benchmark::State& state, int beads, int threads, bool breakable,
-                   cb::SimdPath simd, bool tiled_only, int block) {
+                   cb::SimdPath simd, bool tiled_only, int block, double fput_alpha = 0.0,
+                   double fput_beta = 0.0) {
   cb::ChainParams p;
   p.beads = beads;
   p.gamma = kGamma;
+  p.fput_alpha = fput_alpha;  // anharmonic springs (issue #24); 0: the harmonic chain
+  p.fput_beta = fput_beta;
   if (breakable) p.threshold = 1e300;
   if (!cb::simd_supported(simd)) {
     state.SkipWithError((std::string("no ") + cb::simd_name(simd) + " on this CPU").c_str());
@@ -141,6 +144,17 @@ void BM_UnequalRK4(benchmark::State& state) {
 void BM_FusedTiledRK4(benchmark::State& state) {
   run_fused_rk4(state, static_cast<int>(state.range(0)), 1, false,
                 static_cast<cb::SimdPath>(state.range(1)), true, -1);
+}
+
+// Args: {beads, simd, anharmonic}. BM_FusedRK4 on one thread (the Integrator's default kernel
+// and blocking) with harmonic springs (0) or anharmonic ones, a = 0.3, b = 0.5 (1; issue #24's
+// speed goal: >= 0.8 x the harmonic chain's bead-steps/s at N = 1e3 and 1e7). The ramp keeps
+// every |phi| far below 1, so the values and their cost are those of a real run.
+void BM_FputRK4(benchmark::State& state) {
+  const bool anharmonic = state.range(2) != 0;
+  run_fused_rk4(state, static_cast<int>(state.range(0)), 1, false,
+                static_cast<cb::SimdPath>(state.range(1)), false, -1, anharmonic ? 0.3 : 0.0,
+                anharmonic ? 0.5 : 0.0);
 }
 
 // Args: {beads, simd}. The ensemble path of `sweep --solver rk4` (physics/lanes.h): eight
@@ -290,6 +304,10 @@ BENCHMARK(BM_UnequalRK4)
 BENCHMARK(BM_FusedTiledRK4)
     ->ArgNames({"N", "simd"})
     ->ArgsProduct({{30, 1'000}, {0, 1, 2}})
+    ->Apply(common);
+BENCHMARK(BM_FputRK4)
+    ->ArgNames({"N", "simd", "fput"})
+    ->ArgsProduct({{1'000, 10'000'000}, {1, 2}, {0, 1}})
     ->Apply(common);
 
 // The baseline must solve the same equations: after 500 steps of dt = 0.01 on 1000
