@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/frame_options.h"
+#include "app/solver.h"
 #include "interrupt/interrupt.h"
 #include "scene/scene.h"
 
@@ -19,8 +20,9 @@ namespace cb {
 struct RunOptions {
   std::string scene;
   std::vector<Override> overrides;
-  std::string solver = "rk4";  // rk4 | exact | continuum
-  std::string csv;             // empty: no CSV
+  Solver solver = Solver::Rk4;
+  std::string csv;  // empty: no CSV
+  std::string h5;   // empty: no HDF5 file
   int every = 1;
   bool psi = false;
   bool quiet = false;
@@ -35,9 +37,9 @@ struct SweepOptions {
   // The grid's axes in command-line order (first slowest): "--vary KEY=LO:HI:COUNT[:log]" or
   // "--values KEY=V1,V2,...", each kept with its option name.
   std::vector<std::string> axes;
-  std::string solver = "rk4";  // rk4 | exact
-  int jobs = 0;                // 0: all cores
-  std::string shard = "1/1";   // I/S, I in 1..S, or "slurm" (from the array task's variables)
+  Solver solver = Solver::Rk4;  // rk4 | exact
+  int jobs = 0;                 // 0: all cores
+  std::string shard = "1/1";    // I/S, I in 1..S, or "slurm" (from the array task's variables)
   std::string csv;
   bool quiet = false;
   // --submit slurm: an sbatch array of `tasks` shards instead of computing here.

@@ -69,9 +69,10 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--set", sets,
                       "Override a scene key, e.g. --set chain.gamma=0.01 (repeatable)");
   run_cmd
-      ->add_option("--solver", run.solver,
-                   "rk4 (with breaking), exact or continuum (formulas, no breaking)")
-      ->check(CLI::IsMember({"rk4", "exact", "continuum"}));
+      ->add_option_function<std::string>(
+          "--solver", [&run](const std::string& name) { run.solver = cb::parse_solver(name); },
+          "rk4 (with breaking), exact or continuum (formulas, no breaking)")
+      ->check(CLI::IsMember(cb::run_solver_names()));
   run_cmd->add_option("--csv", run.csv, "Write tau,f,energy,kinetic,potential,phi_1..phi_N here");
   run_cmd->add_option("--every", run.every, "One CSV row every K steps (K >= 1)")
       ->check(whole_number_at_least_1("K"));
@@ -96,8 +97,11 @@ int main(int argc, char** argv) {
       "KEY=LO:HI:COUNT[:log], e.g. chain.threshold=1:300:420 (repeatable: a grid, first slowest)");
   auto* values_opt = sweep_cmd->add_option(
       "--values", values, "KEY=V1,V2,...: explicit values of a key (repeatable, with --vary)");
-  sweep_cmd->add_option("--solver", sweep.solver, "rk4 or exact")
-      ->check(CLI::IsMember({"rk4", "exact"}));
+  sweep_cmd
+      ->add_option_function<std::string>(
+          "--solver", [&sweep](const std::string& name) { sweep.solver = cb::parse_solver(name); },
+          "rk4 or exact")
+      ->check(CLI::IsMember(cb::sweep_solver_names()));
   sweep_cmd->add_option("--jobs,-j", sweep.jobs, "Parallel jobs (default: all cores)")
       ->check(CLI::NonNegativeNumber);
   sweep_cmd->add_option("--shard", sweep.shard,

@@ -13,11 +13,6 @@ namespace cb {
 
 namespace {
 
-// The last step of the run: t_end, or after_break past the first break.
-std::int64_t planned_steps(const SceneDesc& s) {
-  return std::llround(s.integrator.t_end / s.integrator.dt);
-}
-
 bool stopped(const RunRequest& r) {
   return r.stop && r.stop->load(std::memory_order_relaxed);
 }
@@ -95,7 +90,7 @@ RunOutcome run_formula(const SceneDesc& scene, const RunRequest& req, RowSink* s
   const double dt = scene.integrator.dt;
   const std::int64_t last = planned_steps(scene);
   out.max_steps = last;
-  const bool exact = req.solver == "exact";
+  const bool exact = req.solver == Solver::Exact;
   std::unique_ptr<ExactChain> chain;
   if (exact) chain = std::make_unique<ExactChain>(n, scene.chain.gamma, scene.drive);
   const Forcing forcing = make_forcing(scene.drive);
@@ -143,6 +138,10 @@ RunOutcome run_formula(const SceneDesc& scene, const RunRequest& req, RowSink* s
 
 }  // namespace
 
+std::int64_t planned_steps(const SceneDesc& s) {
+  return std::llround(s.integrator.t_end / s.integrator.dt);
+}
+
 void continuum_profile(int beads, double tau, const std::function<double(double)>& f,
                        std::vector<double>& psi, std::vector<double>* phi) {
   double sum = 0.0;
@@ -157,9 +156,7 @@ void continuum_profile(int beads, double tau, const std::function<double(double)
 void check_run_request(const SceneDesc& scene, const RunRequest& request) {
   if (request.every < 1)
     throw SceneError("--every " + std::to_string(request.every) + ": must be 1 or more");
-  if (request.solver != "rk4" && request.solver != "exact" && request.solver != "continuum")
-    throw SceneError("--solver " + request.solver + ": expected rk4, exact or continuum");
-  if (request.solver == "continuum" && scene.drive.type == DriveType::Impulses)
+  if (request.solver == Solver::Continuum && scene.drive.type == DriveType::Impulses)
     throw SceneError(scene.path +
                      ": the continuum formula Eq. (sum) needs a drive with values; impulses are "
                      "delta functions. Use --solver exact or rk4");
@@ -167,8 +164,10 @@ void check_run_request(const SceneDesc& scene, const RunRequest& request) {
 
 RunOutcome run_scene(const SceneDesc& scene, const RunRequest& request, RowSink* sink) {
   check_run_request(scene, request);
-  if (request.solver == "rk4") return run_rk4(scene, request, sink);
-  return run_formula(scene, request, sink);
+  RunOutcome outcome = request.solver == Solver::Rk4 ? run_rk4(scene, request, sink)
+                                                     : run_formula(scene, request, sink);
+  if (sink && outcome.status == 0) sink->end(outcome);
+  return outcome;
 }
 
 }  // namespace cb

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "app/solver.h"
 #include "exact/first_break.h"
 #include "physics/chain.h"
 #include "physics/energy.h"
@@ -30,6 +31,10 @@ struct RunRow {
   const std::vector<double>* psi = nullptr;  // null unless RunRequest::psi
 };
 
+struct RunOutcome;
+
+// Where a run's rows go (the CSV, the HDF5 file, the Python module's arrays): begin once,
+// row for each kept row, end once with the outcome when the run was not stopped.
 class RowSink {
  public:
   virtual ~RowSink() = default;
@@ -37,11 +42,14 @@ class RowSink {
   // stops after a break), so a sink can reserve its storage once.
   virtual void begin(int beads, bool with_psi, std::int64_t max_rows) = 0;
   virtual void row(const RunRow& row) = 0;
+  // After the last row of a run that reached its end (not after a stop or a failure): the
+  // breaks, the energy books and the SIMD path, for outputs that record them.
+  virtual void end(const RunOutcome&) {}
 };
 
 struct RunRequest {
-  std::string solver = "rk4";  // rk4 | exact | continuum
-  int every = 1;               // one row every K steps of dt
+  Solver solver = Solver::Rk4;
+  int every = 1;  // one row every K steps of dt
   bool psi = false;
   int threads = 1;
   const std::atomic<bool>* stop = nullptr;        // polled once a step; set: status 130
@@ -61,6 +69,11 @@ struct RunOutcome {
   std::optional<FirstBreak> exact_break;  // exact solver with a threshold (not expr)
   std::optional<SimdPath> simd;           // rk4 only: the kernel's instruction set
 };
+
+// The last step a run of the scene can reach: t_end on the step grid. A run with after_break
+// may stop earlier (at the first grid step at or past the first break plus after_break), which
+// only the run can tell, so this is the bound that rows, progress and estimates are sized by.
+std::int64_t planned_steps(const SceneDesc& scene);
 
 // Throws SceneError for a request the scene cannot serve (every < 1, continuum + impulses).
 void check_run_request(const SceneDesc& scene, const RunRequest& request);

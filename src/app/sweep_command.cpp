@@ -64,8 +64,7 @@ long peak_memory_kib() {
 }  // namespace
 
 int sweep_command(const SweepOptions& o) {
-  if (o.solver != "rk4" && o.solver != "exact")
-    throw SceneError("--solver " + o.solver + ": sweep supports rk4 or exact");
+  check_sweep_solver(o.solver);
   if (record_path(o.csv) == o.csv)
     throw SceneError("--csv " + o.csv + ": the sweep's record goes to " + o.csv +
                      " (the CSV's name with .json); name the CSV .csv");

@@ -109,7 +109,7 @@ std::string result_html(const Result& r) {
 Result run(const Scene& source, const std::string& solver, int every, bool psi, int threads) {
   const SceneDesc scene = source.resolve();
   RunRequest request;
-  request.solver = solver;
+  request.solver = parse_solver(solver);
   request.every = every;
   request.psi = psi;
   request.threads = threads;

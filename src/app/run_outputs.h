@@ -1,0 +1,58 @@
+// The files a run writes: the CSV, the HDF5 file. `run` and the Python module (Result.save)
+// write through them; each is a RowSink (run_rows.h) fed the same RunRow values, so every file
+// holds the same doubles, and each is written beside its name and renamed into place by
+// commit(), so a reader never sees half a file.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/run_rows.h"
+#include "scene/scene.h"
+
+namespace cb {
+
+// One file of a run's rows.
+class RunFile : public RowSink {
+ public:
+  // Finishes the file and renames it into place; throws OutputError (disk full, ...).
+  virtual void commit() = 0;
+};
+
+// Every file a run writes, fed the same rows and committed together.
+class RunFiles : public RowSink {
+ public:
+  void add(std::unique_ptr<RunFile> file) { files_.push_back(std::move(file)); }
+  bool empty() const { return files_.empty(); }
+  void begin(int beads, bool with_psi, std::int64_t max_rows) override;
+  void row(const RunRow& row) override;
+  void end(const RunOutcome& outcome) override;
+  void commit();
+
+ private:
+  std::vector<std::unique_ptr<RunFile>> files_;
+};
+
+// The CSV contract: header tau,f,energy,kinetic,potential,phi_1..phi_N[,psi_1..psi_N], then
+// each row's numbers in shortest round-trip form (csv.h). The file is opened at once, so an
+// unwritable folder is reported before the run.
+std::unique_ptr<RunFile> csv_run_file(const std::string& path, int beads, bool with_psi);
+
+// What an HDF5 file records about the run besides its rows (h5_run_file.h's attributes).
+struct RunDescription {
+  SceneDesc scene;                  // after overrides
+  std::vector<Override> overrides;  // as given
+  std::string scene_text;           // the scene file's text (empty when it has none)
+  std::string scene_hash;           // scene/scene_hash.h of path and overrides
+  Solver solver = Solver::Rk4;
+  int every = 1;
+  bool psi = false;
+};
+
+// The description of `scene` read from `path` with `overrides` (the file read again for its
+// text and hash).
+RunDescription describe_run(const SceneDesc& scene, const std::vector<Override>& overrides,
+                            Solver solver, int every, bool psi);
+
+}  // namespace cb
