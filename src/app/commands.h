@@ -21,8 +21,9 @@ struct RunOptions {
   std::string scene;
   std::vector<Override> overrides;
   Solver solver = Solver::Rk4;
-  std::string csv;  // empty: no CSV
-  std::string h5;   // empty: no HDF5 file
+  std::string csv;     // empty: no CSV
+  std::string h5;      // empty: no HDF5 file
+  int h5_deflate = 0;  // --h5-compress: 0 plain, 1-9 shuffle + deflate at that level
   int every = 1;
   bool psi = false;
   bool quiet = false;

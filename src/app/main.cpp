@@ -74,6 +74,14 @@ int main(int argc, char** argv) {
           "rk4 (with breaking), exact or continuum (formulas, no breaking)")
       ->check(CLI::IsMember(cb::run_solver_names()));
   run_cmd->add_option("--csv", run.csv, "Write tau,f,energy,kinetic,potential,phi_1..phi_N here");
+  run_cmd->add_option(
+      "--h5", run.h5,
+      "Write the rows as HDF5 here: /observables/tau,f,energy,kinetic,potential, "
+      "/chain/phi (and psi, psi_dot with --psi), the scene and breaks as attributes");
+  run_cmd
+      ->add_option("--h5-compress", run.h5_deflate,
+                   "With --h5: shuffle and deflate the chunks at this level (1 fast .. 9 small)")
+      ->check(CLI::Range(1, 9));
   run_cmd->add_option("--every", run.every, "One CSV row every K steps (K >= 1)")
       ->check(whole_number_at_least_1("K"));
   run_cmd->add_flag("--dry-run", run.dry_run,

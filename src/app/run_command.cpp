@@ -7,6 +7,7 @@
 
 #include "app/commands.h"
 #include "app/csv.h"
+#include "app/h5_run_file.h"
 #include "app/json_text.h"
 #include "app/progress.h"
 #include "app/run_outputs.h"
@@ -74,6 +75,7 @@ Json summary_json(const RunOptions& o, const SceneDesc& scene, const RunOutcome&
 struct RunNeeds {
   MemoryEstimate memory;
   double csv_rows = 0, csv_bytes = 0;
+  double h5_rows = 0, h5_bytes = 0;  // h5_bytes: the raw doubles
 };
 
 RunNeeds run_needs(const RunOptions& o, const SceneDesc& scene) {
@@ -95,6 +97,16 @@ RunNeeds run_needs(const RunOptions& o, const SceneDesc& scene) {
     n.memory.needs.push_back(
         {"CSV header and row buffer", 2 * csv_row_bytes(columns) + (1u << 20)});
   }
+  if (!o.h5.empty()) {
+    // Each dataset's band of rows (h5_run_file.cpp), then the file: the raw doubles.
+    const auto rows = static_cast<std::int64_t>(planned_steps(scene) / o.every + 1);
+    const ChunkShape band = chunk_shape(static_cast<std::uint64_t>(beads), rows);
+    const double matrices = o.psi ? 3 : 1;
+    n.memory.needs.push_back(
+        {"HDF5 row bands", 8.0 * static_cast<double>(band.rows) * beads * matrices});
+    n.h5_rows = static_cast<double>(rows);
+    n.h5_bytes = 8.0 * n.h5_rows * (5 + beads * matrices);
+  }
   return n;
 }
 
@@ -114,19 +126,24 @@ Json run_plan_json(const RunOptions& o, const SceneDesc& scene, const RunNeeds& 
   return j;
 }
 
-// The CSV must fit on its disk: an estimate (at most 25 bytes a number) against the free
-// space of the folder it goes to.
-void require_disk(const RunOptions& o, const RunNeeds& n) {
-  if (o.csv.empty()) return;
+// The CSV (at most 25 bytes a number) and the HDF5 file (its raw doubles) must fit on their
+// disk: an estimate against the free space of the folder each goes to.
+void require_disk(const std::string& what, const std::string& path, double bytes, double rows) {
+  if (path.empty()) return;
   std::error_code error;
-  const auto dir = std::filesystem::absolute(o.csv, error).parent_path();
+  const auto dir = std::filesystem::absolute(path, error).parent_path();
   const auto space = std::filesystem::space(dir, error);
-  if (error || static_cast<double>(space.available) >= n.csv_bytes) return;
-  throw ResourceError(
-      "run: the CSV " + o.csv + " would take up to about " + format_bytes(n.csv_bytes) + " (" +
-      number_text(n.csv_rows) + " rows), more than the " +
-      format_bytes(static_cast<double>(space.available)) + " free in " + dir.string() +
-      "; write fewer rows (--every K), a shorter run (t_end), or " + "write elsewhere");
+  if (error || static_cast<double>(space.available) >= bytes) return;
+  throw ResourceError("run: the " + what + " " + path + " would take up to about " +
+                      format_bytes(bytes) + " (" + number_text(rows) + " rows), more than the " +
+                      format_bytes(static_cast<double>(space.available)) + " free in " +
+                      dir.string() + "; write fewer rows (--every K), a shorter run (t_end), or " +
+                      "write elsewhere");
+}
+
+void require_disk(const RunOptions& o, const RunNeeds& n) {
+  require_disk("CSV", o.csv, n.csv_bytes, n.csv_rows);
+  require_disk("HDF5 file", o.h5, n.h5_bytes, n.h5_rows);
 }
 
 }  // namespace
@@ -149,17 +166,22 @@ int run_command(const RunOptions& o) {
   require_disk(o, needs);
   if (o.dry_run) {
     if (!o.csv.empty()) check_output_path(o.csv, "out.csv");
+    if (!o.h5.empty()) check_output_path(o.h5, "out.h5");
     std::printf("%s\n", json_text(run_plan_json(o, scene, needs, machine)).c_str());
     return 0;
   }
   RunFiles files;
   if (!o.csv.empty()) files.add(csv_run_file(o.csv, scene.chain.beads, o.psi));
+  if (!o.h5.empty())
+    files.add(h5_run_file(o.h5, describe_run(scene, o.overrides, o.solver, o.every, o.psi),
+                          o.h5_deflate));
   Progress progress("run " + scene.name, static_cast<double>(planned_steps(scene)), o.quiet);
   request.on_progress = [&](double steps) { progress.update(steps); };
   const RunOutcome outcome = run_scene(scene, request, files.empty() ? nullptr : &files);
   if (outcome.status == 130)
-    return interrupted_status("stopped at tau = " + number_text(outcome.tau_end) +
-                              "; no CSV written");
+    return interrupted_status(
+        "stopped at tau = " + number_text(outcome.tau_end) +
+        (o.h5.empty() ? "; no CSV written" : "; no CSV or HDF5 file written"));
   if (outcome.status != 0) {
     std::fprintf(stderr, "chainbreak: %s\n", outcome.error.c_str());
     return outcome.status;

@@ -6,6 +6,7 @@
 #include "app/csv.h"
 #include "output/output_file.h"
 #include "scene/scene_hash.h"
+#include "scene/scene_writer.h"
 
 namespace cb {
 
@@ -81,15 +82,22 @@ std::unique_ptr<RunFile> csv_run_file(const std::string& path, int beads, bool w
 RunDescription describe_run(const SceneDesc& scene, const std::vector<Override>& overrides,
                             Solver solver, int every, bool psi) {
   RunDescription d;
-  d.scene = scene;
-  d.overrides = overrides;
+  d.scene = scene.name;
+  d.title = scene.title;
+  d.scene_path = scene.path;
   if (!scene.path.empty()) {
     d.scene_text = file_text(scene.path);
     d.scene_hash = scene_hash(scene.path, overrides);
   }
+  d.parameters = write_scene(scene);
+  for (const Override& o : overrides) d.overrides += o.key + "=" + o.value + "\n";
   d.solver = solver;
   d.every = every;
   d.psi = psi;
+  d.beads = scene.chain.beads;
+  d.gamma = scene.chain.gamma;
+  d.dt = scene.integrator.dt;
+  if (scene.chain.breakable()) d.threshold = scene.chain.threshold;
   return d;
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,19 +40,25 @@ class RunFiles : public RowSink {
 // unwritable folder is reported before the run.
 std::unique_ptr<RunFile> csv_run_file(const std::string& path, int beads, bool with_psi);
 
-// What an HDF5 file records about the run besides its rows (h5_run_file.h's attributes).
+// What a run's HDF5 file records about it besides its rows and its outcome: plain values, so
+// a file read back (h5_run_file.h) describes itself as the run did.
 struct RunDescription {
-  SceneDesc scene;                  // after overrides
-  std::vector<Override> overrides;  // as given
-  std::string scene_text;           // the scene file's text (empty when it has none)
-  std::string scene_hash;           // scene/scene_hash.h of path and overrides
+  std::string scene;  // the scene's name
+  std::string title;
+  std::string scene_path;  // as given
+  std::string scene_text;  // the scene file's text (empty when it has none)
+  std::string scene_hash;  // scene/scene_hash.h of the path and the overrides
+  std::string parameters;  // the scene after overrides, as TOML (scene/scene_writer.h)
+  std::string overrides;   // "key=value" lines, as given
   Solver solver = Solver::Rk4;
   int every = 1;
   bool psi = false;
+  int beads = 0;
+  double gamma = 0.0, dt = 0.0;
+  std::optional<double> threshold;  // none: unbreakable
 };
 
-// The description of `scene` read from `path` with `overrides` (the file read again for its
-// text and hash).
+// The description of a run of `scene` (read from scene.path with `overrides`).
 RunDescription describe_run(const SceneDesc& scene, const std::vector<Override>& overrides,
                             Solver solver, int every, bool psi);
 

@@ -55,6 +55,7 @@ RunOutcome run_rk4(const SceneDesc& scene, const RunRequest& req, RowSink* sink)
     row.f = sim.force_now();
     for (int j = 1; j <= n; ++j) phi[j - 1] = extension(s, j);
     row.psi = req.psi ? &s.psi : nullptr;
+    row.vel = req.psi ? &s.vel : nullptr;
     set_energy(row, energy(s), n);
     sink->row(row);
   };
@@ -99,6 +100,7 @@ RunOutcome run_formula(const SceneDesc& scene, const RunRequest& req, RowSink* s
   RunRow row;
   row.phi = &phi;
   row.psi = req.psi ? &psi : nullptr;
+  row.vel = req.psi ? &vel : nullptr;
   // Continuum: phi from Eq. (sum); psi by summing phi; psi' by a central difference.
   std::vector<double> before(n), after(n);
   const std::function<double(double)> drive = f;

@@ -29,6 +29,7 @@ struct RunRow {
   double tau = 0.0, f = 0.0, energy = 0.0, kinetic = 0.0, potential = 0.0;
   const std::vector<double>* phi = nullptr;
   const std::vector<double>* psi = nullptr;  // null unless RunRequest::psi
+  const std::vector<double>* vel = nullptr;  // psi' (d psi_j / d tau): with psi
 };
 
 struct RunOutcome;
