@@ -55,7 +55,11 @@ Handle string_type() {
 
 Writer::Writer(const std::string& path) : path_(path) {
   quiet_library();
-  file_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  // HDF5 1.10's format: its chunk index for one unlimited dimension (an extensible array)
+  // takes less room and time than 1.8's B-tree; HDF5 >= 1.10 (h5py, h5dump) reads it.
+  Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  H5Pset_libver_bounds(fapl.get(), H5F_LIBVER_V110, H5F_LIBVER_V110);
+  file_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get());
   require(file_ >= 0, path_, "cannot create the HDF5 file; choose a writable folder");
 }
 
