@@ -42,6 +42,7 @@ struct SweepOptions {
   int jobs = 0;                 // 0: all cores
   std::string shard = "1/1";    // I/S, I in 1..S, or "slurm" (from the array task's variables)
   std::string csv;
+  std::string h5;  // also the table as HDF5 (app/h5_sweep_file.h); empty: none
   bool quiet = false;
   // --submit slurm: an sbatch array of `tasks` shards instead of computing here.
   std::string submit;

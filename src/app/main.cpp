@@ -116,6 +116,8 @@ int main(int argc, char** argv) {
                         "I/S: compute only the I-th of S contiguous blocks of the grid; slurm: "
                         "take I and S from the Slurm array task");
   sweep_cmd->add_option("--csv", sweep.csv, "Output CSV")->required();
+  sweep_cmd->add_option("--h5", sweep.h5,
+                        "Also write the table as HDF5: /sweep/<key>, /sweep/spring, /sweep/tau");
   sweep_cmd->add_flag("--quiet,-q", sweep.quiet, "No progress output");
   sweep_cmd
       ->add_option("--submit", sweep.submit,

@@ -94,14 +94,23 @@ int Writer::dataset(const DatasetSpec& spec) {
   H5Pset_chunk_cache(dapl.get(), 0, 0, H5D_CHUNK_CACHE_W0_DEFAULT);
   Handle lcpl(H5Pcreate(H5P_LINK_CREATE), H5Pclose);
   H5Pset_create_intermediate_group(lcpl.get(), 1);
-  const hid_t id = H5Dcreate2(file_, spec.path.c_str(), H5T_IEEE_F64LE, space.get(), lcpl.get(),
-                              dcpl.get(), dapl.get());
+  const hid_t id =
+      H5Dcreate2(file_, spec.path.c_str(), spec.integers ? H5T_STD_I64LE : H5T_IEEE_F64LE,
+                 space.get(), lcpl.get(), dcpl.get(), dapl.get());
   require(id >= 0, path_, "cannot create the dataset " + spec.path);
   datasets_.push_back({id, 0, spec.columns, spec.path});
   return static_cast<int>(datasets_.size() - 1);
 }
 
 void Writer::append(int index, const double* values, std::uint64_t rows) {
+  append_values(index, H5T_NATIVE_DOUBLE, values, rows);
+}
+
+void Writer::append_ints(int index, const std::int64_t* values, std::uint64_t rows) {
+  append_values(index, H5T_NATIVE_INT64, values, rows);
+}
+
+void Writer::append_values(int index, hid_t memory_type, const void* values, std::uint64_t rows) {
   if (rows == 0) return;
   Dataset& d = datasets_.at(static_cast<std::size_t>(index));
   const int rank = d.columns ? 2 : 1;
@@ -112,9 +121,8 @@ void Writer::append(int index, const double* values, std::uint64_t rows) {
   const hsize_t count[2] = {rows, d.columns};
   H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr);
   Handle memory(H5Screate_simple(rank, count, nullptr), H5Sclose);
-  require(
-      H5Dwrite(d.id, H5T_NATIVE_DOUBLE, memory.get(), file_space.get(), H5P_DEFAULT, values) >= 0,
-      path_, "writing " + d.path + " failed (disk full?)");
+  require(H5Dwrite(d.id, memory_type, memory.get(), file_space.get(), H5P_DEFAULT, values) >= 0,
+          path_, "writing " + d.path + " failed (disk full?)");
   d.rows += rows;
 }
 
@@ -246,6 +254,21 @@ std::vector<double> Reader::doubles(const std::string& path) const {
   std::vector<double> values(s[0] * columns);
   if (!values.empty())
     require(H5Dread(d.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) >= 0,
+            path_, "reading " + path + " failed (truncated or damaged file?)");
+  return values;
+}
+
+std::vector<std::int64_t> Reader::ints(const std::string& path) const {
+  const auto s = shape(path);
+  require(s[1] == 0, path_, path + ": expected a series");
+  Handle d(H5Dopen2(file_, path.c_str(), H5P_DEFAULT), H5Dclose);
+  Handle type(H5Dget_type(d.get()), H5Tclose);
+  require(numeric(type.get()), path_, path + ": not a dataset of numbers");
+  require(s[0] <= std::numeric_limits<std::uint64_t>::max() / 16, path_,
+          path + ": impossible size");
+  std::vector<std::int64_t> values(s[0]);
+  if (!values.empty())
+    require(H5Dread(d.get(), H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) >= 0,
             path_, "reading " + path + " failed (truncated or damaged file?)");
   return values;
 }

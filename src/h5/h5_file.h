@@ -25,7 +25,8 @@ struct DatasetSpec {
   std::string path;  // "/observables/tau"
   std::uint64_t columns = 0;
   std::uint64_t chunk_rows = 1, chunk_columns = 1;
-  int deflate = 0;  // 0: none; 1-9: byte shuffle then deflate at that level
+  int deflate = 0;        // 0: none; 1-9: byte shuffle then deflate at that level
+  bool integers = false;  // 64-bit integers instead of doubles (append_ints)
 };
 
 class Writer {
@@ -40,6 +41,7 @@ class Writer {
   int dataset(const DatasetSpec& spec);
   // Appends `rows` rows (rows x columns doubles, row-major) at the end of dataset `id`.
   void append(int id, const double* values, std::uint64_t rows);
+  void append_ints(int id, const std::int64_t* values, std::uint64_t rows);
 
   // Attributes on a group or dataset ("/" is the file). Strings are UTF-8, variable length.
   void attr(const std::string& object, const std::string& name, const std::string& value);
@@ -54,6 +56,7 @@ class Writer {
   void close();
 
  private:
+  void append_values(int id, std::int64_t memory_type, const void* values, std::uint64_t rows);
   struct Dataset {
     std::int64_t id = -1;
     std::uint64_t rows = 0, columns = 0;
@@ -75,6 +78,7 @@ class Reader {
   // Rows and columns of a dataset of doubles (columns 0 for a 1-D one).
   std::vector<std::uint64_t> shape(const std::string& path) const;
   std::vector<double> doubles(const std::string& path) const;  // the whole dataset, row-major
+  std::vector<std::int64_t> ints(const std::string& path) const;
 
   bool has_attr(const std::string& object, const std::string& name) const;
   std::string string_attr(const std::string& object, const std::string& name) const;

@@ -28,9 +28,9 @@ struct Rows {
 void write(benchmark::State& state, bool h5, int deflate) {
   const bool psi = state.range(0) != 0;
   static const Rows rows;
-  const std::string path = (std::filesystem::temp_directory_path() /
-                            (h5 ? "bench_outputs.h5" : "bench_outputs.csv"))
-                               .string();
+  const std::string path =
+      (std::filesystem::temp_directory_path() / (h5 ? "bench_outputs.h5" : "bench_outputs.csv"))
+          .string();
   cb::RunDescription d;
   d.scene = "bench";
   d.beads = kBeads;
@@ -55,13 +55,24 @@ void write(benchmark::State& state, bool h5, int deflate) {
   std::filesystem::remove(path);
 }
 
-void BM_Csv(benchmark::State& s) { write(s, false, 0); }
-void BM_H5(benchmark::State& s) { write(s, true, 0); }
-void BM_H5Deflate1(benchmark::State& s) { write(s, true, 1); }
+void BM_Csv(benchmark::State& s) {
+  write(s, false, 0);
+}
+void BM_H5(benchmark::State& s) {
+  write(s, true, 0);
+}
+void BM_H5Deflate1(benchmark::State& s) {
+  write(s, true, 1);
+}
 
 }  // namespace
 
 BENCHMARK(BM_Csv)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
 BENCHMARK(BM_H5)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
-BENCHMARK(BM_H5Deflate1)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK(BM_H5Deflate1)
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(3);
 BENCHMARK_MAIN();

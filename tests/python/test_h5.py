@@ -122,3 +122,24 @@ def test_load_refuses_a_file_that_is_not_a_run(tmp_path):
     text.write_text("tau,f\n")
     with pytest.raises(RuntimeError, match="not an HDF5 file"):
         chainbreak.load(str(text))
+
+
+def test_sweep_h5_equals_its_csv(tmp_path, cli, scenes):
+    csv, h5 = tmp_path / "sweep.csv", tmp_path / "sweep.h5"
+    cli("sweep", scenes / "anomalous_breaking.toml", "--vary", "drive.beta=0.01:0.1:5",
+        "--values", "chain.gamma=0,0.01", "--set", "integrator.t_end=200", "--csv", csv,
+        "--h5", h5, "-q")
+    lines = csv.read_text().splitlines()
+    assert lines[0] == "drive.beta,chain.gamma,spring,tau"
+    rows = [line.split(",") for line in lines[1:]]
+    with h5py.File(h5, "r") as f:
+        s = f["sweep"]
+        assert same_bits(s["drive.beta"][()], [float(r[0]) for r in rows])
+        assert same_bits(s["chain.gamma"][()], [float(r[1]) for r in rows])
+        assert list(s["spring"][()]) == [int(r[2]) if r[2] else -1 for r in rows]
+        tau = s["tau"][()]
+        for got, r in zip(tau, rows):
+            assert (np.isnan(got) and not r[3]) or got == float(r[3])
+        assert -1 in list(s["spring"][()])  # t_end = 200: the slowest ramps do not break
+        assert f.attrs["solver"] == "rk4" and f.attrs["header"] == lines[0]
+        assert json.loads(f.attrs["record"])["scene_hash"] == f.attrs["scene_hash"]
