@@ -28,9 +28,15 @@ struct RunOptions {
   bool psi = false;
   bool quiet = false;
   int threads = 1;
-  bool dry_run = false;  // print the plan and the resource estimate; run nothing
+  bool dry_run = false;    // print the plan and the resource estimate; run nothing
+  std::string checkpoint;  // --checkpoint FILE (app/run_checkpoint.h); empty: none
+  // Seconds of wall time between checkpoints; < 0: the default, kCheckpointEvery (with
+  // --resume: the checkpointed run's).
+  double checkpoint_every = -1;
+  std::string resume;  // --resume FILE: continue that checkpoint's run
 };
 int run_command(const RunOptions& options);
+inline constexpr double kCheckpointEvery = 600;
 
 struct SweepOptions {
   std::string scene;

@@ -6,6 +6,7 @@
 #include "app/commands.h"
 #include "app/picture_module.h"
 #include "app/sweep_setup.h"  // chainbreak_exe()
+#include "checkpoint/checkpoint.h"
 #include "cluster/grid.h"
 #include "cluster/merge.h"
 #include "drive/drive.h"
@@ -65,7 +66,7 @@ int main(int argc, char** argv) {
   cb::RunOptions run;
   auto* run_cmd = app.add_subcommand(
       "run", "Integrate a scene; CSV of the chain over time, JSON summary on stdout");
-  run_cmd->add_option("scene", run.scene, "Scene file (scenes/*.toml)")->required();
+  run_cmd->add_option("scene", run.scene, "Scene file (scenes/*.toml); not with --resume");
   run_cmd->add_option("--set", sets,
                       "Override a scene key, e.g. --set chain.gamma=0.01 (repeatable)");
   run_cmd
@@ -82,6 +83,16 @@ int main(int argc, char** argv) {
       ->add_option("--h5-compress", run.h5_deflate,
                    "With --h5: shuffle and deflate the chunks at this level (1 fast .. 9 small)")
       ->check(CLI::Range(1, 9));
+  run_cmd->add_option("--checkpoint", run.checkpoint,
+                      "Keep the run's state here (rk4, with --csv): every --checkpoint-every "
+                      "seconds, on SIGUSR1, and on SIGTERM/SIGINT before exiting 143/130");
+  run_cmd
+      ->add_option("--checkpoint-every", run.checkpoint_every,
+                   "Seconds of wall time between checkpoints (default 600)")
+      ->check(CLI::NonNegativeNumber);
+  run_cmd->add_option("--resume", run.resume,
+                      "Continue the run of this checkpoint (its scene and options), appending to "
+                      "its CSV");
   run_cmd->add_option("--every", run.every, "One CSV row every K steps (K >= 1)")
       ->check(whole_number_at_least_1("K"));
   run_cmd->add_flag("--dry-run", run.dry_run,
@@ -299,6 +310,8 @@ int main(int argc, char** argv) {
     return user_error(e.what(), "chainbreak: ");
   } catch (const cb::MergeError& e) {
     return user_error(e.what(), "chainbreak merge: ");
+  } catch (const cb::CheckpointError& e) {
+    return user_error(e.what(), "chainbreak: ");
   } catch (const cb::OutputError& e) {
     return user_error(e.what(), "chainbreak: ");
   } catch (const cb::SimdChoiceError& e) {

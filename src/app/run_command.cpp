@@ -10,11 +10,13 @@
 #include "app/h5_run_file.h"
 #include "app/json_text.h"
 #include "app/progress.h"
+#include "app/run_checkpoint.h"
 #include "app/run_outputs.h"
 #include "app/run_rows.h"
 #include "output/output_file.h"
 #include "physics/energy.h"
 #include "resources/resources.h"
+#include "scene/scene_hash.h"
 
 namespace cb {
 
@@ -148,8 +150,9 @@ void require_disk(const RunOptions& o, const RunNeeds& n) {
 
 }  // namespace
 
-int run_command(const RunOptions& o) {
-  const SceneDesc scene = load_scene(o.scene, o.overrides);
+namespace {
+
+int run_loaded(const RunOptions& o, const SceneDesc& scene, const Checkpoint* resume) {
   RunRequest request;
   request.solver = o.solver;
   request.every = o.every;
@@ -157,6 +160,7 @@ int run_command(const RunOptions& o) {
   request.threads = o.threads;
   request.stop = &g_interrupted;
   check_run_request(scene, request);
+  check_checkpoint_options(o);
   const RunNeeds needs = run_needs(o, scene);
   const MachineMemory machine = machine_memory();
   require_memory(
@@ -170,25 +174,66 @@ int run_command(const RunOptions& o) {
     std::printf("%s\n", json_text(run_plan_json(o, scene, needs, machine)).c_str());
     return 0;
   }
+  const bool checkpointing = !o.checkpoint.empty();
   RunFiles files;
-  if (!o.csv.empty()) files.add(csv_run_file(o.csv, scene.chain.beads, o.psi));
+  if (!o.csv.empty())
+    files.add(checkpointing
+                  ? resumable_csv_run_file(o.csv, scene.chain.beads, o.psi,
+                                           resume ? std::optional(resume->csv_bytes) : std::nullopt)
+                  : csv_run_file(o.csv, scene.chain.beads, o.psi));
   if (!o.h5.empty())
     files.add(h5_run_file(o.h5, describe_run(scene, o.overrides, o.solver, o.every, o.psi),
                           o.h5_deflate));
+  std::unique_ptr<Checkpointer> checkpointer;
+  if (checkpointing) {
+    checkpointer = std::make_unique<Checkpointer>(o, scene_hash(o.scene, o.overrides), files);
+    request.on_step = [&](const Integrator& sim, bool stopped) { checkpointer->see(sim, stopped); };
+  }
+  if (resume) {
+    request.resume_state = &resume->state;
+    request.resume_cursor = {resume->next_kick, resume->next_breakpoint};
+  }
   Progress progress("run " + scene.name, static_cast<double>(planned_steps(scene)), o.quiet);
   request.on_progress = [&](double steps) { progress.update(steps); };
   const RunOutcome outcome = run_scene(scene, request, files.empty() ? nullptr : &files);
-  if (outcome.status == 130)
+  if (outcome.status == 130) {
+    if (checkpointing)
+      return interrupted_status("stopped at tau = " + number_text(outcome.tau_end) +
+                                "; checkpoint written to " + o.checkpoint +
+                                "; continue with: chainbreak run --resume " + o.checkpoint);
     return interrupted_status(
         "stopped at tau = " + number_text(outcome.tau_end) +
         (o.h5.empty() ? "; no CSV written" : "; no CSV or HDF5 file written"));
+  }
   if (outcome.status != 0) {
     std::fprintf(stderr, "chainbreak: %s\n", outcome.error.c_str());
     return outcome.status;
   }
   files.commit();
+  // The run is whole: its checkpoint would only resume a run that has nothing left to do.
+  if (checkpointing) std::remove(o.checkpoint.c_str());
   std::printf("%s\n", json_text(summary_json(o, scene, outcome)).c_str());
   return 0;
+}
+
+}  // namespace
+
+int run_command(const RunOptions& o) {
+  if (o.resume.empty()) {
+    if (o.scene.empty()) throw SceneError("run: give a scene file, or --resume CHECKPOINT");
+    return run_loaded(o, load_scene(o.scene, o.overrides), nullptr);
+  }
+  if (!o.scene.empty())
+    throw SceneError("run --resume " + o.resume +
+                     ": the checkpoint names its scene and options; "
+                     "give either SCENE or --resume, not both");
+  const Checkpoint checkpoint = read_checkpoint(o.resume);
+  RunOptions resumed = options_from_checkpoint(checkpoint, o.resume);
+  resumed.quiet = o.quiet;
+  if (o.checkpoint_every >= 0) resumed.checkpoint_every = o.checkpoint_every;
+  const SceneDesc scene = load_scene(resumed.scene, resumed.overrides);
+  check_resume(checkpoint, o.resume, scene, scene_hash(resumed.scene, resumed.overrides));
+  return run_loaded(resumed, scene, &checkpoint);
 }
 
 }  // namespace cb

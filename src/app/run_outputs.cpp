@@ -5,6 +5,7 @@
 
 #include "app/csv.h"
 #include "output/output_file.h"
+#include "output/resumable_file.h"
 #include "scene/scene_hash.h"
 #include "scene/scene_writer.h"
 
@@ -26,11 +27,47 @@ void RunFiles::commit() {
   for (auto& f : files_) f->commit();
 }
 
+std::uint64_t RunFiles::sync() {
+  std::uint64_t at = 0;
+  for (auto& f : files_) {
+    const std::uint64_t here = f->sync();
+    if (!at) at = here;
+  }
+  return at;
+}
+
 namespace {
+
+// Where a CsvRunFile's text goes: a file written whole or not at all, or a resumable one.
+class TextFile {
+ public:
+  explicit TextFile(const std::string& path) : whole_(std::make_unique<OutputFile>(path)) {}
+  TextFile(const std::string& path, std::optional<std::uint64_t> resume_at)
+      : resumable_(std::make_unique<ResumableFile>(path, resume_at)) {}
+  void write(std::string_view text) {
+    if (whole_)
+      whole_->write(text);
+    else
+      resumable_->write(text);
+  }
+  void commit() {
+    if (whole_)
+      whole_->commit();
+    else
+      resumable_->commit();
+  }
+  std::uint64_t sync() { return resumable_ ? resumable_->sync() : 0; }
+
+ private:
+  std::unique_ptr<OutputFile> whole_;
+  std::unique_ptr<ResumableFile> resumable_;
+};
 
 class CsvRunFile : public RunFile {
  public:
-  CsvRunFile(const std::string& path, int beads, bool with_psi) : file_(path) {
+  CsvRunFile(TextFile file, int beads, bool with_psi, bool header_written)
+      : file_(std::move(file)) {
+    if (header_written) return;
     std::string header = "tau,f,energy,kinetic,potential";
     for (int j = 1; j <= beads; ++j) header += ",phi_" + std::to_string(j);
     if (with_psi)
@@ -53,6 +90,10 @@ class CsvRunFile : public RunFile {
     flush();
     file_.commit();
   }
+  std::uint64_t sync() override {
+    flush();
+    return file_.sync();
+  }
 
  private:
   // Rows are written in blocks of about this many bytes (run_command.cpp's memory estimate
@@ -62,7 +103,7 @@ class CsvRunFile : public RunFile {
     file_.write(buffer_);
     buffer_.clear();
   }
-  OutputFile file_;
+  TextFile file_;
   std::string buffer_;
 };
 
@@ -76,7 +117,13 @@ std::string file_text(const std::string& path) {
 }  // namespace
 
 std::unique_ptr<RunFile> csv_run_file(const std::string& path, int beads, bool with_psi) {
-  return std::make_unique<CsvRunFile>(path, beads, with_psi);
+  return std::make_unique<CsvRunFile>(TextFile(path), beads, with_psi, false);
+}
+
+std::unique_ptr<RunFile> resumable_csv_run_file(const std::string& path, int beads, bool with_psi,
+                                                std::optional<std::uint64_t> resume_at) {
+  return std::make_unique<CsvRunFile>(TextFile(path, resume_at), beads, with_psi,
+                                      resume_at.has_value());
 }
 
 RunDescription describe_run(const SceneDesc& scene, const std::vector<Override>& overrides,

@@ -19,6 +19,9 @@ class RunFile : public RowSink {
  public:
   // Finishes the file and renames it into place; throws OutputError (disk full, ...).
   virtual void commit() = 0;
+  // A checkpoint: makes what was written durable and returns how far it got (the CSV: bytes).
+  // Only files made resumable support it (0 otherwise).
+  virtual std::uint64_t sync() { return 0; }
 };
 
 // Every file a run writes, fed the same rows and committed together.
@@ -30,6 +33,8 @@ class RunFiles : public RowSink {
   void row(const RunRow& row) override;
   void end(const RunOutcome& outcome) override;
   void commit();
+  // The CSV's length for a checkpoint (RunFile::sync of each; the first non-zero one).
+  std::uint64_t sync();
 
  private:
   std::vector<std::unique_ptr<RunFile>> files_;
@@ -39,6 +44,10 @@ class RunFiles : public RowSink {
 // each row's numbers in shortest round-trip form (csv.h). The file is opened at once, so an
 // unwritable folder is reported before the run.
 std::unique_ptr<RunFile> csv_run_file(const std::string& path, int beads, bool with_psi);
+// The same CSV, resumable (output/resumable_file.h): begun afresh, or (resume_at) continued
+// from a checkpoint's length, header included.
+std::unique_ptr<RunFile> resumable_csv_run_file(const std::string& path, int beads, bool with_psi,
+                                                std::optional<std::uint64_t> resume_at);
 
 // What a run's HDF5 file records about it besides its rows and its outcome: plain values, so
 // a file read back (h5_run_file.h) describes itself as the run did.

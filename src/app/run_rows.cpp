@@ -39,6 +39,7 @@ RunOutcome run_rk4(const SceneDesc& scene, const RunRequest& req, RowSink* sink)
   RunOutcome out;
   const double dt = scene.integrator.dt;
   Integrator sim(scene.chain, make_forcing(scene.drive), {dt, req.threads});
+  if (req.resume_state) sim.restore(*req.resume_state, req.resume_cursor);
   const std::int64_t last = planned_steps(scene);
   out.max_steps = last;
   const int n = scene.chain.beads;
@@ -62,7 +63,11 @@ RunOutcome run_rk4(const SceneDesc& scene, const RunRequest& req, RowSink* sink)
   // One run loop (physics/run_loop.h): t_end, after_break past the first break, the stop flag.
   const StopRule stop{last, scene.integrator.after_break, false, req.stop};
   std::vector<Observer> observers;
-  if (sink) observers.push_back({req.every, true, [&](const Integrator&) { write_row(); }});
+  const bool at_start = !req.resume_state;
+  if (sink) observers.push_back({req.every, at_start, [&](const Integrator&) { write_row(); }});
+  if (req.on_step)
+    observers.push_back(
+        {1, false, [&](const Integrator& s) { req.on_step(s, false); }, /*coarse=*/true});
   observers.push_back(
       {1, false, [&](const Integrator& s) { report(req, s.state().step); }, /*coarse=*/true});
   switch (run_until(sim, stop, observers)) {
@@ -70,6 +75,7 @@ RunOutcome run_rk4(const SceneDesc& scene, const RunRequest& req, RowSink* sink)
       break;
     case RunEnd::Cancelled:
       out.status = 130;
+      if (req.on_step) req.on_step(sim, true);
       break;
     case RunEnd::Failed:
       out.status = 1;

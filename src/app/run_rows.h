@@ -18,6 +18,7 @@
 #include "exact/first_break.h"
 #include "physics/chain.h"
 #include "physics/energy.h"
+#include "physics/integrator.h"
 #include "physics/simd.h"
 #include "scene/scene.h"
 
@@ -55,6 +56,13 @@ struct RunRequest {
   int threads = 1;
   const std::atomic<bool>* stop = nullptr;        // polled once a step; set: status 130
   std::function<void(double steps)> on_progress;  // steps done so far, out of max_steps
+  // Long runs (rk4; app/run_checkpoint.h): start from a checkpoint's state instead of rest
+  // (rows continue after it: the row of its step was written before), and a hook that sees the
+  // integrator between steps (after every step, or temporal block) and once more, with
+  // `stopped` true, when the stop flag ended the run.
+  const ChainState* resume_state = nullptr;
+  Integrator::Cursor resume_cursor;
+  std::function<void(const Integrator& sim, bool stopped)> on_step;
 };
 
 struct RunOutcome {
