@@ -50,7 +50,7 @@ TEST_CASE("json_text prints numbers as the CSV does, not as nlohmann's dump") {
 }
 
 TEST_CASE(
-    "planned_steps bounds a run; after_break stops it at the first grid step past the "
+    "planned_steps bounds a run, after_break stops it at the first grid step past the "
     "first break plus after_break") {
   const cb::SceneDesc scene = cb::load_scene(CHAINBREAK_SCENES "/anomalous_breaking.toml", {});
   REQUIRE(scene.integrator.after_break);
