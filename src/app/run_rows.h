@@ -84,7 +84,8 @@ struct RunOutcome {
 // only the run can tell, so this is the bound that rows, progress and estimates are sized by.
 std::int64_t planned_steps(const SceneDesc& scene);
 
-// Throws SceneError for a request the scene cannot serve (every < 1, continuum + impulses).
+// Throws SceneError for a request the scene cannot serve (every < 1, continuum + impulses,
+// continuum for a chain of unequal beads or springs).
 void check_run_request(const SceneDesc& scene, const RunRequest& request);
 
 // The continuum's chain at tau: phi_j from Eq. (sum), psi_j by summing phi (the Python
