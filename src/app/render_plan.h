@@ -9,6 +9,7 @@
 #include "app/commands.h"
 #include "app/frame_grid.h"
 #include "app/frames.h"
+#include "app/json_text.h"
 #include "overlay/overlay_history.h"
 #include "overlay/overlay_layout.h"
 
@@ -44,10 +45,10 @@ void measure_plan(const SceneDesc& scene, RenderPlan& plan);
 void lay_out_frame(const SceneDesc& scene, RenderPlan& plan, int width, int height);
 
 // The JSON sidecar: scene, parameters after overrides, frames, timing, codec, GL, breaks.
-std::string plan_json(const SceneDesc& scene, const RenderPlan& plan, const std::string& gl,
-                      const std::vector<BreakEvent>& breaks);
+Json plan_json(const SceneDesc& scene, const RenderPlan& plan, const std::string& gl,
+               const std::vector<BreakEvent>& breaks);
 // The breaks as the sidecar lists them: spring, tau and the first video frame that shows it.
-std::string breaks_json(const RenderPlan& plan, const std::vector<BreakEvent>& breaks);
+Json breaks_json(const RenderPlan& plan, const std::vector<BreakEvent>& breaks);
 // The sidecar's path for a plan: "<video stem>.json" or "<folder>/<scene>.json".
 std::string sidecar_path(const SceneDesc& scene, const RenderPlan& plan);
 

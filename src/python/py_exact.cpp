@@ -32,7 +32,7 @@ py::array_t<double> over_tau(const TauArray& tau, int beads, Fill&& fill) {
 
 // The scene, once check_run_request (the CLI's one check of a solver request) accepts it for
 // `solver`: the same refusals as run(solver=...), e.g. of anharmonic springs (issue #24).
-SceneDesc checked_for(SceneDesc scene, const char* solver) {
+SceneDesc checked_for(SceneDesc scene, Solver solver) {
   RunRequest request;
   request.solver = solver;
   check_run_request(scene, request);
@@ -42,7 +42,7 @@ SceneDesc checked_for(SceneDesc scene, const char* solver) {
 class Exact {
  public:
   explicit Exact(const Scene& source)
-      : scene_(checked_for(source.resolve(), "exact")), chain_(scene_.chain, scene_.drive) {}
+      : scene_(checked_for(source.resolve(), Solver::Exact)), chain_(scene_.chain, scene_.drive) {}
   py::array_t<double> phi(const TauArray& tau) const {
     return over_tau(tau, chain_.beads(),
                     [&](double t, std::vector<double>& v) { chain_.phi(t, v); });
@@ -81,7 +81,7 @@ class Continuum {
  public:
   explicit Continuum(const Scene& source) : scene_(source.resolve()) {
     RunRequest request;
-    request.solver = "continuum";
+    request.solver = Solver::Continuum;
     check_run_request(scene_, request);  // the same refusal as run(solver="continuum")
     const Forcing forcing = make_forcing(scene_.drive);
     f_ = [forcing](double tau) { return forcing(tau); };
