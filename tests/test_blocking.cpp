@@ -276,6 +276,10 @@ TEST_CASE("a block's states and per-step sums equal the one-step kernel's on a m
             in.beads = kBeads;
             in.gamma = 0.07;
             in.broken = &broken;
+            cb::ChainParams unbreakable;
+            unbreakable.beads = kBeads;
+            cb::ChainCoefficients coef = cb::chain_coefficients(unbreakable);
+            in.coef = &coef;
             // One step at a time, the reference: each worker's StepOutput per step.
             std::vector<double> x = psi, v = vel, xn(kBeads), vn(kBeads);
             std::vector<cb::detail::StepOutput> want(2 * count);
@@ -326,7 +330,8 @@ TEST_CASE("a block's states and per-step sums equal the one-step kernel's on a m
             // A crossing: the same chain with a threshold its springs reach within the block. The
             // block names a step in which the one-step path finds a crossing in worker 0's range
             // (the Hermite test of Integrator::advance_interval on the kernel's candidates).
-            in.threshold = 0.62;
+            coef.threshold = 0.62;
+            coef.checks = true;
             std::vector<bool> crossing(count, false);
             x = psi;
             v = vel;
@@ -339,7 +344,7 @@ TEST_CASE("a block's states and per-step sums equal the one-step kernel's on a m
                   for (const auto& c : out.candidates)
                     crossing[k] = crossing[k] ||
                                   cb::detail::hermite_first_crossing(c.p0, c.p1, c.m0, c.m1, in.h,
-                                                                     in.threshold, false) >= 0.0;
+                                                                     0.62, -0.62) >= 0.0;
               }
               x.swap(xn);
               v.swap(vn);
@@ -355,7 +360,7 @@ TEST_CASE("a block's states and per-step sums equal the one-step kernel's on a m
             REQUIRE(failed < count);
             CHECK(crossing[failed]);
             CHECK(abort.load());
-            in.threshold = 0.0;
+            coef.checks = false;
             // A value that is not finite fails the block too.
             std::vector<double> bad = psi;
             bad[ranges[1].first + 700] = std::numeric_limits<double>::infinity();

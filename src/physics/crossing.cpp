@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include "physics/coefficients.h"
 
 namespace cb::detail {
 
@@ -19,15 +22,17 @@ double bisect(const G& g, double lo, double hi) {
 
 }  // namespace
 
-double hermite_first_crossing(double p0, double p1, double m0, double m1, double h, double c,
-                              bool stretch_only) {
+double hermite_first_crossing(double p0, double p1, double m0, double m1, double h, double upper,
+                              double lower) {
   // p(s) = a + b s + q s^2 + d s^3 on s = theta / h in [0, 1].
   const double a = p0, b = h * m0;
   const double q = -3.0 * p0 - 2.0 * h * m0 + 3.0 * p1 - h * m1;
   const double d = 2.0 * p0 + h * m0 - 2.0 * p1 + h * m1;
   auto p = [&](double s) { return a + s * (b + s * (q + s * d)); };
-  auto up = [&](double s) { return p(s) - c; };
-  auto down = [&](double s) { return -p(s) - c; };
+  // lower - p(s) is -(p(s) - lower): for lower = -c the bits of the one-sided -p(s) - c.
+  const bool stretch_only = lower == -std::numeric_limits<double>::infinity();
+  auto up = [&](double s) { return p(s) - upper; };
+  auto down = [&](double s) { return lower - p(s); };
   auto reached = [&](double s) { return up(s) >= 0.0 || (!stretch_only && down(s) >= 0.0); };
   if (reached(0.0)) return 0.0;
 
@@ -61,6 +66,21 @@ double hermite_first_crossing(double p0, double p1, double m0, double m1, double
     if (best <= 1.0) return best * h;
   }
   return -1.0;
+}
+
+int earliest_crossing(const std::vector<Candidate>& candidates, const ChainCoefficients& coef,
+                      double ta, double tb, double* first) {
+  *first = tb + 1.0;
+  int spring = -1;
+  for (const Candidate& c : candidates) {
+    const double theta = hermite_first_crossing(c.p0, c.p1, c.m0, c.m1, tb - ta,
+                                                coef.upper_of(c.spring), coef.lower_of(c.spring));
+    if (theta >= 0.0 && (ta + theta < *first || (ta + theta == *first && c.spring < spring))) {
+      *first = ta + theta;
+      spring = c.spring;
+    }
+  }
+  return spring;
 }
 
 double first_time_at_least(const std::function<double(double)>& f, double f_end, double ta,

@@ -1,16 +1,45 @@
-// Internal: where inside a step a spring or the pull string reaches its threshold.
+// Internal: where inside a step a spring or the pull string reaches its threshold, and the one
+// rule every kernel uses to decide that a spring may reach it (kernels, lanes, Integrator).
 #pragma once
 
 #include <functional>
+#include <vector>
+
+namespace cb {
+struct ChainCoefficients;
+}
 
 namespace cb::detail {
 
+// A spring's Hermite cubic on a step of h is bounded by the larger end value plus
+// kHermiteSlack h (|m0| + |m1|) (the extremes of the derivative basis functions 4/27 and
+// -4/27): a spring that stays below that bound cannot cross inside the step. The one place
+// this constant is written.
+inline constexpr double kHermiteSlack = 4.0 / 27.0;
+inline double hermite_slack(double h) {
+  return kHermiteSlack * h;
+}
+
+// A spring whose Hermite cubic over the step may reach its bounds (phi and dphi/dtau at both
+// ends of the step).
+struct Candidate {
+  int spring;
+  double p0, p1, m0, m1;
+};
+
 // First theta in [0, h] at which the cubic Hermite interpolant of phi through
-// (0, p0, m0) and (h, p1, m1) reaches the threshold (|phi| >= c, or phi >= c when
-// stretch_only); a negative value when it does not. The interpolant's error is O(h^4), so
-// the crossing time is too wherever phi crosses with a nonzero slope.
-double hermite_first_crossing(double p0, double p1, double m0, double m1, double h, double c,
-                              bool stretch_only);
+// (0, p0, m0) and (h, p1, m1) reaches a bound: phi >= upper or phi <= lower (lower = -inf:
+// only tension breaks; the paper's |phi| >= c is upper = c, lower = -c); a negative value
+// when it does not. The interpolant's error is O(h^4), so the crossing time is too wherever
+// phi crosses with a nonzero slope.
+double hermite_first_crossing(double p0, double p1, double m0, double m1, double h, double upper,
+                              double lower);
+
+// The earliest crossing among `candidates` inside [ta, tb], each spring against its own bounds
+// (coef's upper_of / lower_of); ties go to the lower spring. Returns the spring and sets
+// *first to its time, or -1 (*first = tb + 1) when none crosses.
+int earliest_crossing(const std::vector<Candidate>& candidates, const ChainCoefficients& coef,
+                      double ta, double tb, double* first);
 
 // First t in [ta, tb] with f(t) >= c, by sampling and bisection; negative when none.
 // f is evaluated at tb only through f_end (its left limit there).

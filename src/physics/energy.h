@@ -12,6 +12,9 @@ struct EnergyParts {
 };
 
 EnergyParts energy(const ChainState& state);
+// Eq. (energy) of a chain of Eq. (general): kinetic sum m_j psi_j'^2 / 2, potential sum over
+// intact springs K_j phi_j^2 / 2. For a chain with m_j = K_j = 1 the bits of energy(state).
+EnergyParts energy(const ChainState& state, const ChainParams& params);
 
 // Eq. (energy): energy per particle with the paper's 1/N scaling of psi, i.e. total/N^3.
 inline double per_particle(double total, int beads) {
@@ -28,8 +31,10 @@ struct EnergyBooks {
   double balance_error = 0.0;  // as energy_balance_error()
 };
 EnergyBooks energy_books(const ChainState& state);
+EnergyBooks energy_books(const ChainState& state, const ChainParams& params);
 
 // |E - (W - D - B)| relative to the largest of the terms: how well the books close.
 double energy_balance_error(const ChainState& state);
+double energy_balance_error(const ChainState& state, const ChainParams& params);
 
 }  // namespace cb

@@ -57,7 +57,8 @@ StepBooks step_books(int workers, Out out, const double force[3], double h) {
 // The kernel's input for the chain as it is now, into the next-state arrays: everything but
 // the step's h and forces (the one-step path and a temporal block fill those).
 detail::StepInput chain_input(ChainState& state, const ChainParams& params,
-                              std::vector<double>& psi_next, std::vector<double>& vel_next) {
+                              const ChainCoefficients& coef, std::vector<double>& psi_next,
+                              std::vector<double>& vel_next) {
   detail::StepInput in;
   in.psi = state.psi.data();
   in.vel = state.vel.data();
@@ -66,8 +67,7 @@ detail::StepInput chain_input(ChainState& state, const ChainParams& params,
   in.beads = params.beads;
   in.gamma = params.gamma;
   in.broken = &state.broken;
-  in.threshold = params.breakable() ? params.threshold : 0.0;
-  in.stretch_only = params.break_on == BreakMode::Stretch;
+  in.coef = &coef;
   return in;
 }
 
@@ -124,7 +124,10 @@ struct Integrator::Impl {
 };
 
 Integrator::Integrator(const ChainParams& params, Forcing forcing, IntegratorOptions options)
-    : params_(params), forcing_(std::move(forcing)), options_(options) {
+    : params_(params),
+      coef_(chain_coefficients(params, options.per_bead_policy)),
+      forcing_(std::move(forcing)),
+      options_(options) {
   assert(params_.beads >= 1 && options_.dt > 0.0);
   assert(!options_.block_steps || *options_.block_steps <= kMaxBlockSteps);
   state_.psi = detail::zero_array(params_.beads);
@@ -280,7 +283,7 @@ int Integrator::small_run(int max_steps) {
   Impl& im = *impl_;
   const double dt = options_.dt;
   const double snap = 1e-9 * dt;  // as in step()
-  detail::StepInput in = chain_input(state_, params_, im.psi_next, im.vel_next);
+  detail::StepInput in = chain_input(state_, params_, coef_, im.psi_next, im.vel_next);
   // The copy of the chain kernel im.chain_kernel would pick at each call.
   const detail::Rk4Chain kernel = detail::rk4_chain_for(im.simd, in);
   detail::StepOutput& out = im.outputs[0];
@@ -398,7 +401,7 @@ double Integrator::pull_string_crossing(double ta, double tb, double f_end) cons
 // only if no step of it breaks a spring or stops being finite.
 int Integrator::step_block(int count) {
   Impl& im = *impl_;
-  detail::StepInput in = chain_input(state_, params_, im.psi_next, im.vel_next);
+  detail::StepInput in = chain_input(state_, params_, coef_, im.psi_next, im.vel_next);
   std::atomic<bool> abort{false};
   im.pool.run([&](int w) {
     im.block_result[w] =
@@ -429,9 +432,12 @@ void Integrator::apply_kicks(double up_to) {
   auto& next = impl_->next_kick;
   while (next < forcing_.kicks.size() && forcing_.kicks[next].tau <= up_to) {
     if (!state_.string_broken) {
+      // An impulse s changes bead N's velocity by s / m_N; the work is m_N ((v + dv)^2 - v^2) / 2
+      // (s / 1 == s and (0.5 1) x == 0.5 x: the uniform chain's bits).
       double& v = state_.vel.back();
-      const double s = forcing_.kicks[next].strength;
-      state_.work += 0.5 * ((v + s) * (v + s) - v * v);
+      const double m = coef_.mass_of(params_.beads);
+      const double s = forcing_.kicks[next].strength / m;
+      state_.work += 0.5 * m * ((v + s) * (v + s) - v * v);
       v += s;
     }
     ++next;
@@ -445,7 +451,7 @@ double Integrator::drive_at(double tau) const {
 
 bool Integrator::rk4(double ta, double tb, bool end_is_breakpoint) {
   Impl& im = *impl_;
-  detail::StepInput in = chain_input(state_, params_, im.psi_next, im.vel_next);
+  detail::StepInput in = chain_input(state_, params_, coef_, im.psi_next, im.vel_next);
   in.h = tb - ta;
   // At a jump the last stage must see the force from the left.
   const double t_end = end_is_breakpoint ? std::nextafter(tb, ta) : tb;
@@ -496,19 +502,18 @@ bool Integrator::advance_interval(double ta, double tb, bool end_is_breakpoint) 
 // commit it, or integrate to the earliest crossing, break that spring and redo the rest.
 bool Integrator::settle_interval(double ta, double tb, bool end_is_breakpoint) {
   for (int guard = 0;; ++guard) {
-    // The earliest threshold crossing inside (ta, tb], if any.
+    // The earliest threshold crossing inside (ta, tb], if any: each worker's candidates in
+    // worker order (ties to the lower spring, so the order does not matter).
     double first = tb + 1.0;
     int spring = -1;
-    for (const auto& out : impl_->outputs)
-      for (const auto& c : out.candidates) {
-        const double theta =
-            detail::hermite_first_crossing(c.p0, c.p1, c.m0, c.m1, tb - ta, params_.threshold,
-                                           params_.break_on == BreakMode::Stretch);
-        if (theta >= 0.0 && (ta + theta < first || (ta + theta == first && c.spring < spring))) {
-          first = ta + theta;
-          spring = c.spring;
-        }
+    for (const auto& out : impl_->outputs) {
+      double t = 0.0;
+      const int s = detail::earliest_crossing(out.candidates, coef_, ta, tb, &t);
+      if (s >= 0 && (t < first || (t == first && s < spring))) {
+        first = t;
+        spring = s;
       }
+    }
     if (pull_string_live()) {
       const double f_end = drive_at(end_is_breakpoint ? std::nextafter(tb, ta) : tb);
       const double t = pull_string_crossing(ta, tb, f_end);
@@ -546,8 +551,9 @@ void Integrator::break_spring(int spring, double tau) {
     state_.string_broken = true;
     return;
   }
+  // The spring's elastic energy K_j phi_j^2 / 2 leaves with it ((0.5 1) phi == 0.5 phi).
   const double phi = extension(state_, spring);
-  state_.break_loss += 0.5 * phi * phi;
+  state_.break_loss += 0.5 * coef_.stiffness_of(spring) * phi * phi;
   state_.broken.insert(std::lower_bound(state_.broken.begin(), state_.broken.end(), spring),
                        spring);
 }
@@ -555,7 +561,7 @@ void Integrator::break_spring(int spring, double tau) {
 void Integrator::report_non_finite(double tau) {
   std::ostringstream msg;
   msg << "the chain's state stopped being finite near tau = " << tau << ". ";
-  const double limit = rk4_stability_limit(params_.beads, params_.gamma);
+  const double limit = rk4_stability_limit(params_);
   if (options_.dt > limit)
     msg << "dt = " << options_.dt << " is beyond RK4's stability limit " << limit
         << " for this chain: use a smaller dt.";
@@ -587,6 +593,84 @@ double rk4_stability_limit(int beads, double gamma) {
   last_beads = beads;
   last_gamma = std::bit_cast<std::uint64_t>(gamma);
   return last_limit;
+}
+
+namespace {
+
+// The largest eigenvalue of M^-1 K for the chain (K_{N+1} = 0), which has the eigenvalues of the
+// symmetric tridiagonal A = M^-1/2 K M^-1/2: a_j = (K_j + K_{j+1}) / m_j on the diagonal,
+// b_j = -K_{j+1} / sqrt(m_j m_{j+1}) beside it. Found by bisection on Sylvester's inertia (the
+// Sturm count of eigenvalues below x from the LDL^T pivots of A - x I) between 0 and
+// Gershgorin's bound max_j a_j + |b_{j-1}| + |b_j|: the count is exact up to the rounding of
+// each pivot, so the answer is the true lambda_max to a few ulps; the caller adds a margin.
+double largest_eigenvalue(const ChainParams& p) {
+  const int n = p.beads;
+  std::vector<double> a(n), b(n, 0.0);  // b[j]: between beads j and j+1 (0-based)
+  for (int j = 1; j <= n; ++j) {
+    const double right = j < n ? p.stiffness_of(j + 1) : 0.0;
+    a[j - 1] = (p.stiffness_of(j) + right) / p.mass_of(j);
+    if (j < n) b[j - 1] = right / std::sqrt(p.mass_of(j) * p.mass_of(j + 1));
+  }
+  double hi = 0.0;
+  for (int j = 0; j < n; ++j) hi = std::max(hi, a[j] + b[j] + (j > 0 ? b[j - 1] : 0.0));
+  // How many eigenvalues of A lie below x.
+  auto below = [&](double x) {
+    int count = 0;
+    double d = 1.0;
+    for (int j = 0; j < n; ++j) {
+      const double off = j > 0 ? b[j - 1] * b[j - 1] : 0.0;
+      d = a[j] - x - (j > 0 ? off / d : 0.0);
+      if (d == 0.0) d = -1e-300;  // a pivot on x: count it below (x is then an upper bound)
+      if (d < 0.0) ++count;
+    }
+    return count;
+  };
+  double lo = 0.0;
+  for (int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (below(mid) < n ? lo : hi) = mid;
+  }
+  return hi;
+}
+
+// The largest dt for which |R(h mu)| <= 1 for every mu = -gamma +- sqrt(gamma^2 - Omega^2) with
+// Omega^2 in [0, lambda_max]: every mode of any chain whose highest squared frequency is at
+// most lambda_max (friction is proportional to mass, so each mode has the same gamma).
+// Sampling the whole range, not the chain's own frequencies, makes it safe without knowing
+// them; the highest frequency is sampled exactly.
+double rk4_stability_limit_for(double lambda_max, double gamma) {
+  const double omega_max = std::sqrt(lambda_max);
+  auto stable = [&](double h) {
+    constexpr int kSamples = 512;
+    for (int s = 1; s <= kSamples; ++s) {
+      const double omega = omega_max * s / kSamples;
+      const std::complex<double> root =
+          std::sqrt(std::complex<double>(gamma * gamma - omega * omega, 0.0));
+      for (const auto mu : {-gamma + root, -gamma - root}) {
+        const std::complex<double> z = h * mu;
+        const std::complex<double> r = 1.0 + z * (1.0 + z * (0.5 + z * (1.0 / 6.0 + z / 24.0)));
+        if (std::abs(r) > 1.0 + 1e-12) return false;
+      }
+    }
+    return true;
+  };
+  double lo = 0.0, hi = 4.0;
+  while (stable(hi) && hi < 1e6) hi *= 2.0;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (stable(mid) ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+}  // namespace
+
+double rk4_stability_limit(const ChainParams& params) {
+  ChainParams p = params;
+  p.normalize();  // arrays of ones: the uniform chain's own answer
+  if (p.uniform_dynamics()) return rk4_stability_limit(p.beads, p.gamma);
+  // A relative margin of 1e-12 on lambda_max covers the Sturm count's rounding.
+  return rk4_stability_limit_for(largest_eigenvalue(p) * (1.0 + 1e-12), p.gamma);
 }
 
 namespace {

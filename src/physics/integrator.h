@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "physics/chain.h"
+#include "physics/coefficients.h"
 #include "physics/forcing.h"
 #include "physics/simd.h"
 
@@ -39,6 +40,9 @@ struct IntegratorOptions {
   // one thread, no spring broken) and in temporal blocks (the window kernel). Same bits
   // either way; tests compare the two paths.
   bool tiled_only = false;
+  // Always take the PerBead coefficient policy (stencil.inc), also for a chain whose arrays are
+  // all ones: the same bits as the Uniform policy, which tests check.
+  bool per_bead_policy = false;
 };
 
 inline constexpr int kDefaultBlockSteps = 8;
@@ -79,6 +83,8 @@ class Integrator {
 
   const ChainState& state() const { return state_; }
   const ChainParams& params() const { return params_; }
+  // The chain's constants as the kernels read them, built once (coefficients.h).
+  const ChainCoefficients& coefficients() const { return coef_; }
   double dt() const { return options_.dt; }
   // Whether steps take the one-chain kernel (rk4_chain.h) while no spring is broken: one
   // worker, N < 20000, AVX2 or AVX-512, not tiled_only. Same bits either way.
@@ -94,6 +100,7 @@ class Integrator {
  private:
   struct Impl;
   ChainParams params_;
+  ChainCoefficients coef_;
   Forcing forcing_;
   IntegratorOptions options_;
   ChainState state_;
@@ -124,5 +131,8 @@ class Integrator {
 // Largest dt for which classical RK4 is stable on every normal mode of an N-bead chain
 // with friction gamma (|R(h mu)| <= 1 for the eigenvalues mu of Eq. (dimless)).
 double rk4_stability_limit(int beads, double gamma);
+// The same for any chain of Eq. (general): masses and stiffnesses included (the uniform chain's
+// answer is the one above). See rk4_stability_limit's definition for the bound used.
+double rk4_stability_limit(const ChainParams& params);
 
 }  // namespace cb

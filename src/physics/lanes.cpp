@@ -5,12 +5,19 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
+#include "physics/coefficients.h"
 #include "physics/crossing.h"
 #include "physics/lanes_interval.h"
 
 namespace cb {
+
+namespace detail {
+// The crossing rule, as every kernel includes it (here on doubles only).
+#include "physics/stencil.inc"
+}  // namespace detail
 
 namespace {
 
@@ -21,6 +28,8 @@ using detail::kLanes;
 struct Lane {
   bool active = false;
   LaneJob job;
+  ChainCoefficients coef;    // the job's constants, built once when the lane takes it
+  double nearest_bound = 0.0;  // coef.nearest_bound()
   bool checks = false;       // springs can break (the fused kernel's threshold test)
   bool pull = false;         // the pull string can break
   std::int64_t step = 0;     // steps done
@@ -32,6 +41,7 @@ struct Lane {
   std::size_t next_breakpoint = 0;  // the first breakpoint after the current step's start
   std::size_t next_kick = 0;
   DriveCache drive;  // the drive's last value, as Integrator::drive_at keeps it
+  std::vector<detail::Candidate> candidates;  // first_crossing's (reused)
   double ta = 0.0, tb = 0.0;
   bool end_is_breakpoint = false;
   double p_max = 0.0, m_max = 0.0;  // max_j |phi_j|, |dphi_j/dtau| now (at rest: 0)
@@ -41,12 +51,23 @@ struct Lane {
 struct LaneArrays {
   int rows;
   std::vector<double> x0, v0, xn, vn;
+  // The PerBead policy's 1/m_j and K_j per lane (lanes_interval.h); ones for a uniform lane,
+  // whose bits the PerBead stencil then reproduces.
+  std::vector<double> inv_mass, stiffness;
   explicit LaneArrays(int beads) : rows(beads + 2) {
-    for (auto* a : {&x0, &v0, &xn, &vn}) a->assign(static_cast<std::size_t>(rows) * kLanes, 0.0);
+    for (auto* a : {&x0, &v0, &xn, &vn, &inv_mass, &stiffness})
+      a->assign(static_cast<std::size_t>(rows) * kLanes, 0.0);
   }
   // A lane starts from rest, Integrator's initial state.
   void clear_lane(int k) {
     for (int r = 0; r < rows; ++r) x0[r * kLanes + k] = v0[r * kLanes + k] = 0.0;
+  }
+  // Lane k's coefficients: row j holds bead j's 1/m and spring j's K; row N + 1 K_{N+1} = 0.
+  void set_coefficients(int k, const ChainCoefficients& c) {
+    for (int r = 1; r < rows - 1; ++r) {
+      inv_mass[r * kLanes + k] = c.per_bead ? c.inv_mass[r - 1] : 1.0;
+      stiffness[r * kLanes + k] = c.per_bead ? c.stiffness[r - 1] : 1.0;
+    }
   }
 };
 
@@ -98,7 +119,8 @@ void begin_step(Lane& lane) {
 void apply_kicks(Lane& lane, double up_to, double& v_end) {
   const auto& kicks = lane.job.forcing.kicks;
   while (lane.next_kick < kicks.size() && kicks[lane.next_kick].tau <= up_to) {
-    v_end += kicks[lane.next_kick].strength;
+    // s / m_N (s / 1 == s: the uniform chain's bits), as Integrator::apply_kicks.
+    v_end += kicks[lane.next_kick].strength / lane.coef.mass_of(lane.job.params.beads);
     lane.m_max = std::numeric_limits<double>::infinity();
     ++lane.next_kick;
   }
@@ -107,7 +129,7 @@ void apply_kicks(Lane& lane, double up_to, double& v_end) {
 // Integrator::advance_interval's search for the earliest crossing in (ta, tb] of a lane whose
 // interval was integrated: springs by their Hermite cubic (the fused kernel's bound first), then
 // the pull string. Returns the spring (0: the string) and sets `first`, or -1.
-int first_crossing(const Lane& lane, const LaneArrays& a, int k, bool near, double f_end,
+int first_crossing(Lane& lane, const LaneArrays& a, int k, bool near, double f_end,
                    double& first) {
   const ChainParams& p = lane.job.params;
   const int n = p.beads;
@@ -115,22 +137,22 @@ int first_crossing(const Lane& lane, const LaneArrays& a, int k, bool near, doub
   first = tb + 1.0;
   int spring = -1;
   if (lane.checks && near) {
-    constexpr double kHermiteSlack = 4.0 / 27.0;
-    const double slack = kHermiteSlack * (tb - ta);
-    const bool stretch = p.break_on == BreakMode::Stretch;
+    // The fused kernel's candidates (the same bound, stencil.inc), then Integrator's search.
+    const ChainCoefficients& c = lane.coef;
+    const double slack = detail::hermite_slack(tb - ta);
+    std::vector<detail::Candidate>& candidates = lane.candidates;
+    candidates.clear();
     for (int r = 1; r <= n; ++r) {
       const int i = r * kLanes + k, m = i - kLanes;
       const double p0 = a.x0[i] - a.x0[m], p1 = a.xn[i] - a.xn[m];
       const double m0 = a.v0[i] - a.v0[m], m1 = a.vn[i] - a.vn[m];
-      const double reach = stretch ? std::max(p0, p1) : std::max(std::abs(p0), std::abs(p1));
-      if (!(reach + slack * (std::abs(m0) + std::abs(m1)) >= p.threshold)) continue;
-      const double theta =
-          detail::hermite_first_crossing(p0, p1, m0, m1, tb - ta, p.threshold, stretch);
-      if (theta >= 0.0 && (ta + theta < first || (ta + theta == first && r < spring))) {
-        first = ta + theta;
-        spring = r;
-      }
+      const bool trip =
+          c.per_bead
+              ? detail::may_cross_between(p0, p1, m0, m1, slack, c.upper[r - 1], c.lower[r - 1])
+              : detail::may_cross(p0, p1, m0, m1, slack, c.threshold, c.stretch_only);
+      if (trip) candidates.push_back({r, p0, p1, m0, m1});
     }
+    spring = detail::earliest_crossing(candidates, c, ta, tb, &first);
   }
   if (lane.pull) {
     const Forcing& f = lane.job.forcing;
@@ -179,7 +201,10 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
       lane.active = true;
       lane.job = std::move(*job);
       const ChainParams& p = lane.job.params;
-      lane.checks = p.breakable() && p.threshold > 0.0;
+      lane.coef = chain_coefficients(p);
+      a.set_coefficients(k, lane.coef);
+      lane.checks = lane.coef.checks;
+      lane.nearest_bound = lane.coef.nearest_bound();
       lane.pull = p.pull_string && p.breakable();
       lane.breakpoints_sorted =
           std::is_sorted(lane.job.forcing.breakpoints.begin(), lane.job.forcing.breakpoints.end());
@@ -219,10 +244,15 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
       f1[k] = lane.drive(lane.job.forcing, 0.5 * (ta + tb));
       f2[k] = lane.drive(lane.job.forcing, lane.end_is_breakpoint ? std::nextafter(tb, ta) : tb);
       slack[k] = (4.0 / 27.0) * h[k];
-      threshold[k] = lane.checks ? lane.job.params.threshold : kInf;
+      threshold[k] = lane.checks ? lane.nearest_bound : kInf;
       p0[k] = lane.p_max;
       m0[k] = lane.m_max;
     }
+    // The PerBead stencil as soon as one lane needs it (uniform lanes hold ones: same bits).
+    const bool per_bead =
+        std::any_of(std::begin(lanes), std::end(lanes), [](const Lane& l) { return l.active && l.coef.per_bead; });
+    in.inv_mass = per_bead ? a.inv_mass.data() : nullptr;
+    in.stiffness = per_bead ? a.stiffness.data() : nullptr;
     in.x0 = a.x0.data(), in.v0 = a.v0.data();
     in.xn = a.xn.data(), in.vn = a.vn.data();
     kernel(in);

@@ -2,12 +2,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #include "physics/lanes_interval.h"
 #include "physics/target_avx2_begin.inc"
 
 namespace cb::detail::avx2 {
 constexpr int kVec = 4;  // doubles a register
+#include "physics/stencil.inc"
 #include "physics/lanes_kernel.inc"
 }  // namespace cb::detail::avx2
 

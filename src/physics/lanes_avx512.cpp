@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #include "physics/lanes_interval.h"
 #include "physics/target_avx512_begin.inc"
 
 namespace cb::detail::avx512 {
 constexpr int kVec = 8;  // doubles a register
+#include "physics/stencil.inc"
 #include "physics/lanes_kernel.inc"
 }  // namespace cb::detail::avx512
 

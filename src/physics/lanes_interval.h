@@ -16,11 +16,16 @@ struct LaneInterval {
   const double* v0 = nullptr;
   double *xn = nullptr, *vn = nullptr;  // the new state
   // Per lane: 2 gamma, the interval's length h, h/2, h/6, the force at its start, middle and
-  // end, the Hermite slack (4/27) h, the threshold (+inf: no checks), and the largest |phi_j|
+  // end, the Hermite slack (4/27) h, the nearest breaking bound of any spring (+inf: no
+  // checks; ChainCoefficients::nearest_bound), and the largest |phi_j|
   // and |dphi_j/dtau| over the springs at the start (+inf when unknown, e.g. after a kick).
   const double *g2 = nullptr, *h = nullptr, *h2 = nullptr, *h6 = nullptr;
   const double *f0 = nullptr, *f1 = nullptr, *f2 = nullptr;
   const double *slack = nullptr, *threshold = nullptr, *p_start = nullptr, *m_start = nullptr;
+  // The PerBead policy's coefficients (stencil.inc), rows as the state's: 1/m_j at row j, K_j
+  // at row j, K_{N+1} = 0 at row N + 1; a Uniform lane of a PerBead call holds ones. Null: the
+  // Uniform policy for every lane.
+  const double *inv_mass = nullptr, *stiffness = nullptr;
   // Out, per lane: 1 if a new value may not be finite; 1 if a spring may reach its threshold
   // (then the springs are tested one by one); the largest |phi_j|, |dphi_j/dtau| at the end.
   int *bad = nullptr, *near = nullptr;

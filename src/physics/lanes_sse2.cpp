@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #include "physics/lanes_interval.h"
 
 namespace cb::detail::sse2 {
 constexpr int kVec = 2;  // doubles a register
+#include "physics/stencil.inc"
 #include "physics/lanes_kernel.inc"
 }  // namespace cb::detail::sse2

@@ -14,6 +14,7 @@
 
 namespace cb::detail::avx2 {
 constexpr int kVec = 4;  // doubles a register
+#include "physics/stencil.inc"
 #include "physics/rk4_chain_kernel.inc"
 #include "physics/rk4_window_kernel.inc"
 }  // namespace cb::detail::avx2

@@ -4,7 +4,7 @@ namespace cb::detail {
 
 TileScratch::TileScratch() {
   const std::size_t n = kTile + 2 * kHalo;
-  for (auto* a : {&x0, &v0, &xs, &vs, &xt, &vt, &sx, &sv, &kl, &kr, &fw}) a->assign(n, 0.0);
+  for (auto* a : {&x0, &v0, &xs, &vs, &xt, &vt, &sx, &sv, &kl, &kr, &fw, &im, &wm}) a->assign(n, 0.0);
 }
 
 Rk4Beads rk4_kernel(SimdPath path) {

@@ -12,6 +12,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "physics/coefficients.h"
+#include "physics/crossing.h"
 #include "physics/simd.h"
 
 namespace cb::detail {
@@ -34,14 +36,9 @@ struct StepInput {
   double h = 0.0;
   double force[3] = {0, 0, 0};               // f at the start, middle and end of the step
   const std::vector<int>* broken = nullptr;  // sorted broken springs
-  double threshold = 0.0;                    // phi_c; <= 0 or inf disables the checks
-  bool stretch_only = false;
-};
-
-// A spring whose Hermite cubic over the step may reach the threshold.
-struct Candidate {
-  int spring;
-  double p0, p1, m0, m1;  // phi and dphi/dtau at both ends of the step
+  // The chain's constants (coefficients.h): the stencil's policy, the arrays of the PerBead
+  // one, the breaking bounds (no checks when coef->checks is false).
+  const ChainCoefficients* coef = nullptr;
 };
 
 // What one worker accumulates over its tiles.
@@ -60,6 +57,7 @@ struct StepOutput {
 // Scratch buffers for one worker.
 struct TileScratch {
   std::vector<double> x0, v0, xs, vs, xt, vt, sx, sv, kl, kr, fw;
+  std::vector<double> im, wm;     // the window's 1/m and m (PerBead path)
   std::vector<int> specials;      // local indices that need the general stencil, sorted
   const double* x_new = nullptr;  // where the last tile's new state is (xs/vs or xt/vt)
   const double* v_new = nullptr;

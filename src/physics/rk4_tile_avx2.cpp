@@ -2,12 +2,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 #include "physics/rk4_tile.h"
 #include "physics/target_avx2_begin.inc"
 
 namespace cb::detail::avx2 {
+#include "physics/stencil.inc"
 #include "physics/rk4_tile_kernel.inc"
 }  // namespace cb::detail::avx2
 

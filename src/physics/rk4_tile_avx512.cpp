@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 #include "physics/rk4_tile.h"
 #include "physics/target_avx512_begin.inc"
 
 namespace cb::detail::avx512 {
+#include "physics/stencil.inc"
 #include "physics/rk4_tile_kernel.inc"
 }  // namespace cb::detail::avx512
 

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 #include "physics/rk4_tile.h"
 
 namespace cb::detail::sse2 {
+#include "physics/stencil.inc"
 #include "physics/rk4_tile_kernel.inc"
 }  // namespace cb::detail::sse2

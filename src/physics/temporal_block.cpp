@@ -13,10 +13,8 @@ namespace {
 // inside the step (the test Integrator::advance_interval applies to the same candidates).
 bool tile_is_plain(const StepInput& in, const StepOutput& out) {
   if (!out.finite) return false;
-  for (const Candidate& c : out.candidates)
-    if (hermite_first_crossing(c.p0, c.p1, c.m0, c.m1, in.h, in.threshold, in.stretch_only) >= 0.0)
-      return false;
-  return true;
+  double first = 0.0;
+  return earliest_crossing(out.candidates, *in.coef, 0.0, in.h, &first) < 0;
 }
 
 // Whether no broken spring touches beads [lo, hi): spring j joins beads j - 2 and j - 1, and

@@ -1,0 +1,45 @@
+#include "physics/coefficients.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cb {
+
+ChainCoefficients chain_coefficients(const ChainParams& params, bool per_bead_always) {
+  ChainParams p = params;
+  p.normalize();
+  ChainCoefficients c;
+  const int n = p.beads;
+  c.beads = n;
+  c.threshold = p.threshold;
+  c.stretch_only = p.break_on == BreakMode::Stretch;
+  c.checks = p.breakable() && p.min_threshold() > 0.0;
+  c.per_bead = per_bead_always || !p.uniform_dynamics() || !p.uniform_thresholds();
+  if (!c.per_bead) return c;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const std::size_t size = static_cast<std::size_t>(n) + kCoefficientPad;
+  c.inv_mass.assign(size, 0.0);
+  c.mass.assign(size, 0.0);
+  c.stiffness.assign(size, 0.0);
+  c.upper.assign(size, kInf);
+  c.lower.assign(size, -kInf);
+  for (int j = 1; j <= n; ++j) {
+    const double m = p.mass_of(j);
+    c.mass[j - 1] = m;
+    c.inv_mass[j - 1] = 1.0 / m;
+    c.stiffness[j - 1] = p.stiffness_of(j);
+    const double phi_c = p.threshold_of(j);
+    c.upper[j - 1] = phi_c;
+    c.lower[j - 1] = c.stretch_only ? -kInf : -phi_c;
+  }
+  return c;
+}
+
+double ChainCoefficients::nearest_bound() const {
+  if (!per_bead) return threshold;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (int j = 0; j < beads; ++j) nearest = std::min({nearest, upper[j], -lower[j]});
+  return nearest;
+}
+
+}  // namespace cb

@@ -1,0 +1,62 @@
+// The constants of a chain as the kernels read them: arrays indexed by bead or spring, built
+// once per Integrator or lane job and shared read-only by every thread, block and lane
+// (MuJoCo's mjModel).
+//
+// Design note: ChainParams says what a chain is (empty arrays for the paper's uniform chain);
+// ChainCoefficients says how the stencil computes it. A chain whose masses and stiffnesses are
+// all 1 and whose thresholds are all equal takes the Uniform coefficient policy (stencil.inc):
+// today's expressions, no arrays, the paper's bits. Any other chain takes the PerBead policy,
+// which reads 1/m_j, K_j and K_{j+1} at every bead and each spring's two breaking bounds.
+// With unit arrays the PerBead expressions give the Uniform bits too (1 * a == a), which the
+// tests use to check one against the other.
+//
+// Each spring has an upper and a lower bound: it breaks when phi_j >= upper_j or phi_j <=
+// lower_j. The paper's |phi_j| >= phi_c,j is (phi_c,j, -phi_c,j); break_on = "stretch" is
+// (phi_c,j, -inf). A static load (gravity, issue #22) will shift both bounds of each spring by
+// its equilibrium extension, with no change to the kernels.
+#pragma once
+
+#include <limits>
+#include <vector>
+
+#include "physics/chain.h"
+
+namespace cb {
+
+// Zeros (1/m, K, m) and +-inf (bounds) past bead N, so that a kernel may load whole vectors of
+// a partial last block, and K_{N+1} one past it, without masks.
+inline constexpr int kCoefficientPad = 16;
+
+struct ChainCoefficients {
+  int beads = 0;
+  bool per_bead = false;  // false: the Uniform policy (no arrays)
+  // Springs can break: the kernels collect candidates (some finite bound).
+  bool checks = false;
+  // The Uniform policy's rule: |phi_j| >= threshold (phi_j >= threshold when stretch_only).
+  double threshold = std::numeric_limits<double>::infinity();
+  bool stretch_only = false;
+  // PerBead (bead j / spring j at index j - 1, beads + kCoefficientPad values each):
+  std::vector<double> inv_mass;   // 1 / m_j
+  std::vector<double> mass;       // m_j (friction's power 2 gamma m_j v_j^2)
+  std::vector<double> stiffness;  // K_j; K_{N+1} = 0 at index N (the free end)
+  std::vector<double> upper;      // spring j breaks at phi_j >= upper[j - 1] ...
+  std::vector<double> lower;      // ... or phi_j <= lower[j - 1]
+
+  double mass_of(int bead) const { return per_bead ? mass[bead - 1] : 1.0; }          // 1..N
+  double stiffness_of(int spring) const { return per_bead ? stiffness[spring - 1] : 1.0; }  // 1..N
+  // Spring 1..N's bounds; also for a Uniform chain.
+  double upper_of(int spring) const { return per_bead ? upper[spring - 1] : threshold; }
+  double lower_of(int spring) const {
+    if (per_bead) return lower[spring - 1];
+    return stretch_only ? -std::numeric_limits<double>::infinity() : -threshold;
+  }
+  // The smallest |bound| of any spring: no spring breaks while every |phi_j| stays below it
+  // (a lane's test whether any spring may cross, before the springs are tested one by one).
+  double nearest_bound() const;
+};
+
+// The coefficients of `params`. per_bead_always: the PerBead policy even for a uniform chain
+// (its arrays of ones then give the Uniform bits; tests compare the two).
+ChainCoefficients chain_coefficients(const ChainParams& params, bool per_bead_always = false);
+
+}  // namespace cb
