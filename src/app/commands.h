@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/frame_options.h"
+#include "app/solver.h"
 #include "interrupt/interrupt.h"
 #include "scene/scene.h"
 
@@ -19,15 +20,23 @@ namespace cb {
 struct RunOptions {
   std::string scene;
   std::vector<Override> overrides;
-  std::string solver = "rk4";  // rk4 | exact | continuum
-  std::string csv;             // empty: no CSV
+  Solver solver = Solver::Rk4;
+  std::string csv;     // empty: no CSV
+  std::string h5;      // empty: no HDF5 file
+  int h5_deflate = 0;  // --h5-compress: 0 plain, 1-9 shuffle + deflate at that level
   int every = 1;
   bool psi = false;
   bool quiet = false;
   int threads = 1;
-  bool dry_run = false;  // print the plan and the resource estimate; run nothing
+  bool dry_run = false;    // print the plan and the resource estimate; run nothing
+  std::string checkpoint;  // --checkpoint FILE (app/run_checkpoint.h); empty: none
+  // Seconds of wall time between checkpoints; < 0: the default, kCheckpointEvery (with
+  // --resume: the checkpointed run's).
+  double checkpoint_every = -1;
+  std::string resume;  // --resume FILE: continue that checkpoint's run
 };
 int run_command(const RunOptions& options);
+inline constexpr double kCheckpointEvery = 600;
 
 struct SweepOptions {
   std::string scene;
@@ -35,10 +44,11 @@ struct SweepOptions {
   // The grid's axes in command-line order (first slowest): "--vary KEY=LO:HI:COUNT[:log]" or
   // "--values KEY=V1,V2,...", each kept with its option name.
   std::vector<std::string> axes;
-  std::string solver = "rk4";  // rk4 | exact
-  int jobs = 0;                // 0: all cores
-  std::string shard = "1/1";   // I/S, I in 1..S, or "slurm" (from the array task's variables)
+  Solver solver = Solver::Rk4;  // rk4 | exact
+  int jobs = 0;                 // 0: all cores
+  std::string shard = "1/1";    // I/S, I in 1..S, or "slurm" (from the array task's variables)
   std::string csv;
+  std::string h5;  // also the table as HDF5 (app/h5_sweep_file.h); empty: none
   bool quiet = false;
   // --submit slurm: an sbatch array of `tasks` shards instead of computing here.
   std::string submit;

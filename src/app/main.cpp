@@ -6,6 +6,7 @@
 #include "app/commands.h"
 #include "app/picture_module.h"
 #include "app/sweep_setup.h"  // chainbreak_exe()
+#include "checkpoint/checkpoint.h"
 #include "cluster/grid.h"
 #include "cluster/merge.h"
 #include "drive/drive.h"
@@ -65,14 +66,33 @@ int main(int argc, char** argv) {
   cb::RunOptions run;
   auto* run_cmd = app.add_subcommand(
       "run", "Integrate a scene; CSV of the chain over time, JSON summary on stdout");
-  run_cmd->add_option("scene", run.scene, "Scene file (scenes/*.toml)")->required();
+  run_cmd->add_option("scene", run.scene, "Scene file (scenes/*.toml); not with --resume");
   run_cmd->add_option("--set", sets,
                       "Override a scene key, e.g. --set chain.gamma=0.01 (repeatable)");
   run_cmd
-      ->add_option("--solver", run.solver,
-                   "rk4 (with breaking), exact or continuum (formulas, no breaking)")
-      ->check(CLI::IsMember({"rk4", "exact", "continuum"}));
+      ->add_option_function<std::string>(
+          "--solver", [&run](const std::string& name) { run.solver = cb::parse_solver(name); },
+          "rk4 (with breaking), exact or continuum (formulas, no breaking)")
+      ->check(CLI::IsMember(cb::run_solver_names()));
   run_cmd->add_option("--csv", run.csv, "Write tau,f,energy,kinetic,potential,phi_1..phi_N here");
+  run_cmd->add_option(
+      "--h5", run.h5,
+      "Write the rows as HDF5 here: /observables/tau,f,energy,kinetic,potential, "
+      "/chain/phi (and psi, psi_dot with --psi), the scene and breaks as attributes");
+  run_cmd
+      ->add_option("--h5-compress", run.h5_deflate,
+                   "With --h5: shuffle and deflate the chunks at this level (1 fast .. 9 small)")
+      ->check(CLI::Range(1, 9));
+  run_cmd->add_option("--checkpoint", run.checkpoint,
+                      "Keep the run's state here (rk4, with --csv): every --checkpoint-every "
+                      "seconds, on SIGUSR1, and on SIGTERM/SIGINT before exiting 143/130");
+  run_cmd
+      ->add_option("--checkpoint-every", run.checkpoint_every,
+                   "Seconds of wall time between checkpoints (default 600)")
+      ->check(CLI::NonNegativeNumber);
+  run_cmd->add_option("--resume", run.resume,
+                      "Continue the run of this checkpoint (its scene and options), appending to "
+                      "its CSV");
   run_cmd->add_option("--every", run.every, "One CSV row every K steps (K >= 1)")
       ->check(whole_number_at_least_1("K"));
   run_cmd->add_flag("--dry-run", run.dry_run,
@@ -96,14 +116,19 @@ int main(int argc, char** argv) {
       "KEY=LO:HI:COUNT[:log], e.g. chain.threshold=1:300:420 (repeatable: a grid, first slowest)");
   auto* values_opt = sweep_cmd->add_option(
       "--values", values, "KEY=V1,V2,...: explicit values of a key (repeatable, with --vary)");
-  sweep_cmd->add_option("--solver", sweep.solver, "rk4 or exact")
-      ->check(CLI::IsMember({"rk4", "exact"}));
+  sweep_cmd
+      ->add_option_function<std::string>(
+          "--solver", [&sweep](const std::string& name) { sweep.solver = cb::parse_solver(name); },
+          "rk4 or exact")
+      ->check(CLI::IsMember(cb::sweep_solver_names()));
   sweep_cmd->add_option("--jobs,-j", sweep.jobs, "Parallel jobs (default: all cores)")
       ->check(CLI::NonNegativeNumber);
   sweep_cmd->add_option("--shard", sweep.shard,
                         "I/S: compute only the I-th of S contiguous blocks of the grid; slurm: "
                         "take I and S from the Slurm array task");
   sweep_cmd->add_option("--csv", sweep.csv, "Output CSV")->required();
+  sweep_cmd->add_option("--h5", sweep.h5,
+                        "Also write the table as HDF5: /sweep/<key>, /sweep/spring, /sweep/tau");
   sweep_cmd->add_flag("--quiet,-q", sweep.quiet, "No progress output");
   sweep_cmd
       ->add_option("--submit", sweep.submit,
@@ -285,6 +310,8 @@ int main(int argc, char** argv) {
     return user_error(e.what(), "chainbreak: ");
   } catch (const cb::MergeError& e) {
     return user_error(e.what(), "chainbreak merge: ");
+  } catch (const cb::CheckpointError& e) {
+    return user_error(e.what(), "chainbreak: ");
   } catch (const cb::OutputError& e) {
     return user_error(e.what(), "chainbreak: ");
   } catch (const cb::SimdChoiceError& e) {

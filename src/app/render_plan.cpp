@@ -6,11 +6,12 @@
 #include <sstream>
 
 #include "app/csv.h"
+#include "app/json_text.h"
 #include "output/output_file.h"
 #include "output/video_encoder.h"
-#include "scene/scene_hash.h"
 #include "physics/simd.h"
 #include "resources/resources.h"
+#include "scene/scene_hash.h"
 
 namespace cb {
 
@@ -18,36 +19,31 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string numbers_json(const std::vector<double>& values) {
-  std::string out = "[";
-  for (double v : values) out += (out.size() > 1 ? "," : "") + number_text(v);
-  return out + "]";
-}
-
-std::string drive_json(const DriveDesc& d) {
-  std::string j =
-      "{\"type\":" + json_string(drive_type_name(d.type)) + ",\"t0\":" + number_text(d.t0);
+Json drive_json(const DriveDesc& d) {
+  Json j = {{"type", drive_type_name(d.type)}, {"t0", d.t0}};
   switch (d.type) {
     case DriveType::Step:
-      j += ",\"amplitude\":" + number_text(d.amplitude);
+      j["amplitude"] = d.amplitude;
       break;
     case DriveType::Ramp:
-      j += ",\"beta\":" + number_text(d.beta);
+      j["beta"] = d.beta;
       break;
     case DriveType::Sine:
-      j += ",\"amplitude\":" + number_text(d.amplitude) + ",\"period\":" + number_text(d.period);
+      j["amplitude"] = d.amplitude;
+      j["period"] = d.period;
       break;
     case DriveType::Impulses:
-      j += ",\"times\":" + numbers_json(d.times) + ",\"strengths\":" + numbers_json(d.strengths);
+      j["times"] = d.times;
+      j["strengths"] = d.strengths;
       break;
     case DriveType::Table:
-      j += ",\"file\":" + json_string(d.table_file);
+      j["file"] = d.table_file;
       break;
     case DriveType::Expr:
-      j += ",\"expr\":" + json_string(d.expr);
+      j["expr"] = d.expr;
       break;
   }
-  return j + "}";
+  return j;
 }
 
 // The scene's [render] overlay switches, then the command line's.
@@ -121,8 +117,9 @@ RenderPlan plan_render(const SceneDesc& scene, const RenderOptions& o) {
   if (o.slowmo >= 0) slow.factor = o.slowmo;
   if (o.slowmo_window > 0) slow.window = o.slowmo_window;
   if (!(slow.factor > 0.0 && slow.factor <= 1.0))
-    throw SceneError("--slowmo " + number_text(slow.factor) +
-                     ": expected a factor between 0 and 1, e.g. --slowmo 0.1 (a tenth of the speed)");
+    throw SceneError(
+        "--slowmo " + number_text(slow.factor) +
+        ": expected a factor between 0 and 1, e.g. --slowmo 0.1 (a tenth of the speed)");
   p.frame.slowmo = slow.factor;
   p.frame.slowmo_window = slow.window;
   require_frame_budget(scene, p, p.frame.speed / p.frame.fps);
@@ -136,9 +133,9 @@ RenderPlan plan_render(const SceneDesc& scene, const RenderOptions& o) {
 
 void measure_plan(const SceneDesc& scene, RenderPlan& p) {
   // With the overlay the pre-pass also samples, at the frame times, the plots' extremes.
-  p.extent = measure_run(scene, scene.integrator.t_end, p.grid.dt(),
-                         p.overlay_layout.enabled ? p.grid.substeps() : 0,
-                         p.grid.slow_motion().on());
+  p.extent =
+      measure_run(scene, scene.integrator.t_end, p.grid.dt(),
+                  p.overlay_layout.enabled ? p.grid.substeps() : 0, p.grid.slow_motion().on());
   std::vector<double> breaks;
   for (const BreakEvent& b : p.extent.breaks) breaks.push_back(b.tau);
   p.grid.lay_out(p.extent.tau_stop, breaks);
@@ -157,60 +154,56 @@ void measure_plan(const SceneDesc& scene, RenderPlan& p) {
   }
 }
 
-std::string plan_json(const SceneDesc& scene, const RenderPlan& p, const std::string& gl,
-                      const std::vector<BreakEvent>& breaks) {
+Json plan_json(const SceneDesc& scene, const RenderPlan& p, const std::string& gl,
+               const std::vector<BreakEvent>& breaks) {
   const ChainParams& c = scene.chain;
-  std::string j =
-      "{\"title\":" + json_string(scene.title) + ",\"scene\":" + json_string(scene.path);
-  j += ",\"scene_hash\":" + json_string(p.scene_hash);
-  j += ",\"chain\":{\"beads\":" + std::to_string(c.beads) + ",\"gamma\":" + number_text(c.gamma) +
-       ",\"threshold\":" + (c.breakable() ? number_text(c.threshold) : std::string("null")) +
-       ",\"break_on\":" + json_string(c.break_on == BreakMode::Abs ? "abs" : "stretch") +
-       ",\"pull_string\":" + (c.pull_string ? "true" : "false") + "}";
-  j += ",\"drive\":" + drive_json(scene.drive);
-  j += ",\"integrator\":{\"dt\":" + number_text(scene.integrator.dt) +
-       ",\"dt_used\":" + number_text(p.grid.dt()) + ",\"t_end\":" + number_text(scene.integrator.t_end) +
-       ",\"after_break\":" +
-       (scene.integrator.after_break ? number_text(*scene.integrator.after_break)
-                                     : std::string("null")) +
-       "}";
-  j += ",\"output\":" + json_string(p.output) + ",\"codec\":" + json_string(p.codec);
-  j += ",\"width\":" + std::to_string(p.frame.width) +
-       ",\"height\":" + std::to_string(p.frame.height);
-  j += ",\"view\":" + json_string(p.frame.view);
-  j += ",\"overlay\":" +
-       json_string(p.overlay_layout.enabled ? overlay_switches_text(p.overlay) : "none");
+  Json j = {{"title", scene.title}, {"scene", scene.path}, {"scene_hash", p.scene_hash}};
+  j["chain"] = {{"beads", c.beads},
+                {"gamma", c.gamma},
+                {"threshold", c.breakable() ? Json(c.threshold) : Json(nullptr)},
+                {"break_on", c.break_on == BreakMode::Abs ? "abs" : "stretch"},
+                {"pull_string", c.pull_string}};
+  j["drive"] = drive_json(scene.drive);
+  const auto& after = scene.integrator.after_break;
+  j["integrator"] = {{"dt", scene.integrator.dt},
+                     {"dt_used", p.grid.dt()},
+                     {"t_end", scene.integrator.t_end},
+                     {"after_break", after ? Json(*after) : Json(nullptr)}};
+  j["output"] = p.output;
+  j["codec"] = p.codec;
+  j["width"] = p.frame.width;
+  j["height"] = p.frame.height;
+  j["view"] = p.frame.view;
+  j["overlay"] = p.overlay_layout.enabled ? overlay_switches_text(p.overlay) : "none";
   const std::int64_t frames = p.title_frames + p.grid.frames();
-  j += ",\"frames\":" + std::to_string(frames) + ",\"fps\":" + number_text(p.frame.fps);
-  j += ",\"duration\":" + number_text(static_cast<double>(frames) / p.frame.fps);
-  j += ",\"title_card_frames\":" + std::to_string(p.title_frames);
-  j += ",\"tau_per_second\":" + number_text(p.frame.speed) +
-       ",\"tau_end\":" + number_text(p.grid.tau(p.grid.frames() - 1));
-  j += ",\"slowmo\":" +
-       (p.grid.slow_motion().on()
-            ? "{\"factor\":" + number_text(p.grid.slow_motion().factor) +
-                  ",\"window\":" + number_text(p.grid.slow_motion().window) + "}"
-            : std::string("null"));
-  if (!gl.empty()) j += ",\"gl\":" + json_string(gl);
-  j += ",\"simd\":" + json_string(simd_name(active_simd()));  // the path the frames ran on
-  j += ",\"breaks\":" + breaks_json(p, breaks);
+  j["frames"] = frames;
+  j["fps"] = p.frame.fps;
+  j["duration"] = static_cast<double>(frames) / p.frame.fps;
+  j["title_card_frames"] = p.title_frames;
+  j["tau_per_second"] = p.frame.speed;
+  j["tau_end"] = p.grid.tau(p.grid.frames() - 1);
+  j["slowmo"] = p.grid.slow_motion().on() ? Json{{"factor", p.grid.slow_motion().factor},
+                                                 {"window", p.grid.slow_motion().window}}
+                                          : Json(nullptr);
+  if (!gl.empty()) j["gl"] = gl;
+  j["simd"] = simd_name(active_simd());  // the path the frames ran on
+  j["breaks"] = breaks_json(p, breaks);
   // Every video frame's tau: the title card's frames show the chain at rest (tau 0).
   std::vector<double> taus(static_cast<std::size_t>(p.title_frames), 0.0);
   const std::vector<double> grid = p.grid.taus();
   taus.insert(taus.end(), grid.begin(), grid.end());
-  j += ",\"frame_tau\":" + numbers_json(taus);
-  return j + "}";
+  j["frame_tau"] = taus;
+  return j;
 }
 
-std::string breaks_json(const RenderPlan& p, const std::vector<BreakEvent>& breaks) {
-  std::string j = "[";
-  for (std::size_t i = 0; i < breaks.size(); ++i) {
+Json breaks_json(const RenderPlan& p, const std::vector<BreakEvent>& breaks) {
+  Json j = Json::array();
+  for (const BreakEvent& b : breaks) {
     // The first frame that shows the break.
-    const std::int64_t frame = p.title_frames + p.grid.first_frame_at_or_after(breaks[i].tau);
-    j += (i ? "," : "") + std::string("{\"spring\":") + std::to_string(breaks[i].spring) +
-         ",\"tau\":" + number_text(breaks[i].tau) + ",\"frame\":" + std::to_string(frame) + "}";
+    const std::int64_t frame = p.title_frames + p.grid.first_frame_at_or_after(b.tau);
+    j.push_back({{"spring", b.spring}, {"tau", b.tau}, {"frame", frame}});
   }
-  return j + "]";
+  return j;
 }
 
 std::string sidecar_path(const SceneDesc& scene, const RenderPlan& p) {

@@ -9,6 +9,7 @@
 #include "app/commands.h"
 #include "app/frame_grid.h"
 #include "app/frames.h"
+#include "app/json_text.h"
 #include "overlay/overlay_history.h"
 #include "overlay/overlay_layout.h"
 
@@ -20,7 +21,7 @@ struct RenderPlan {
   // step dt = grid.dt() (never above the scene's). Laid out by measure_plan.
   FrameGrid grid;
   std::int64_t title_frames = 0;  // title card frames before the grid's first (--title-card)
-  RunExtent extent;  // what keeps the chain in the frame; where the run stops
+  RunExtent extent;               // what keeps the chain in the frame; where the run stops
   SnapshotStyle style;
   // The overlay: the parts asked for (scene [render], then --overlay / --no-overlay), where
   // they go (disabled when none is on or the frame is under 640x360) and what the physics
@@ -40,10 +41,10 @@ RenderPlan plan_render(const SceneDesc& scene, const RenderOptions& options);
 void measure_plan(const SceneDesc& scene, RenderPlan& plan);
 
 // The JSON sidecar: scene, parameters after overrides, frames, timing, codec, GL, breaks.
-std::string plan_json(const SceneDesc& scene, const RenderPlan& plan, const std::string& gl,
-                      const std::vector<BreakEvent>& breaks);
+Json plan_json(const SceneDesc& scene, const RenderPlan& plan, const std::string& gl,
+               const std::vector<BreakEvent>& breaks);
 // The breaks as the sidecar lists them: spring, tau and the first video frame that shows it.
-std::string breaks_json(const RenderPlan& plan, const std::vector<BreakEvent>& breaks);
+Json breaks_json(const RenderPlan& plan, const std::vector<BreakEvent>& breaks);
 // The sidecar's path for a plan: "<video stem>.json" or "<folder>/<scene>.json".
 std::string sidecar_path(const SceneDesc& scene, const RenderPlan& plan);
 

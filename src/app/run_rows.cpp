@@ -13,11 +13,6 @@ namespace cb {
 
 namespace {
 
-// The last step of the run: t_end, or after_break past the first break.
-std::int64_t planned_steps(const SceneDesc& s) {
-  return std::llround(s.integrator.t_end / s.integrator.dt);
-}
-
 bool stopped(const RunRequest& r) {
   return r.stop && r.stop->load(std::memory_order_relaxed);
 }
@@ -49,6 +44,7 @@ RunOutcome run_rk4(const SceneDesc& scene, const RunRequest& req, RowSink* sink)
   RunOutcome out;
   const double dt = scene.integrator.dt;
   Integrator sim(scene.chain, make_forcing(scene.drive), {dt, req.threads});
+  if (req.resume_state) sim.restore(*req.resume_state, req.resume_cursor);
   const std::int64_t last = planned_steps(scene);
   out.max_steps = last;
   const int n = scene.chain.beads;
@@ -65,13 +61,18 @@ RunOutcome run_rk4(const SceneDesc& scene, const RunRequest& req, RowSink* sink)
     row.f = sim.force_now();
     for (int j = 1; j <= n; ++j) phi[j - 1] = extension(s, j);
     row.psi = req.psi ? &s.psi : nullptr;
+    row.vel = req.psi ? &s.vel : nullptr;
     set_energy(row, energy(s), n);
     sink->row(row);
   };
   // One run loop (physics/run_loop.h): t_end, after_break past the first break, the stop flag.
   const StopRule stop{last, scene.integrator.after_break, false, req.stop};
   std::vector<Observer> observers;
-  if (sink) observers.push_back({req.every, true, [&](const Integrator&) { write_row(); }});
+  const bool at_start = !req.resume_state;
+  if (sink) observers.push_back({req.every, at_start, [&](const Integrator&) { write_row(); }});
+  if (req.on_step)
+    observers.push_back(
+        {1, false, [&](const Integrator& s) { req.on_step(s, false); }, /*coarse=*/true});
   observers.push_back(
       {1, false, [&](const Integrator& s) { report(req, s.state().step); }, /*coarse=*/true});
   switch (run_until(sim, stop, observers)) {
@@ -79,6 +80,7 @@ RunOutcome run_rk4(const SceneDesc& scene, const RunRequest& req, RowSink* sink)
       break;
     case RunEnd::Cancelled:
       out.status = 130;
+      if (req.on_step) req.on_step(sim, true);
       break;
     case RunEnd::Failed:
       out.status = 1;
@@ -100,7 +102,7 @@ RunOutcome run_formula(const SceneDesc& scene, const RunRequest& req, RowSink* s
   const double dt = scene.integrator.dt;
   const std::int64_t last = planned_steps(scene);
   out.max_steps = last;
-  const bool exact = req.solver == "exact";
+  const bool exact = req.solver == Solver::Exact;
   std::unique_ptr<ExactChain> chain;
   if (exact) chain = std::make_unique<ExactChain>(scene.chain, scene.drive);
   const Forcing forcing = make_forcing(scene.drive);
@@ -109,6 +111,7 @@ RunOutcome run_formula(const SceneDesc& scene, const RunRequest& req, RowSink* s
   RunRow row;
   row.phi = &phi;
   row.psi = req.psi ? &psi : nullptr;
+  row.vel = req.psi ? &vel : nullptr;
   // Continuum: phi from Eq. (sum); psi by summing phi; psi' by a central difference.
   std::vector<double> before(n), after(n);
   const std::function<double(double)> drive = f;
@@ -148,6 +151,10 @@ RunOutcome run_formula(const SceneDesc& scene, const RunRequest& req, RowSink* s
 
 }  // namespace
 
+std::int64_t planned_steps(const SceneDesc& s) {
+  return std::llround(s.integrator.t_end / s.integrator.dt);
+}
+
 void continuum_profile(int beads, double tau, const std::function<double(double)>& f,
                        std::vector<double>& psi, std::vector<double>* phi) {
   double sum = 0.0;
@@ -162,9 +169,7 @@ void continuum_profile(int beads, double tau, const std::function<double(double)
 void check_run_request(const SceneDesc& scene, const RunRequest& request) {
   if (request.every < 1)
     throw SceneError("--every " + std::to_string(request.every) + ": must be 1 or more");
-  if (request.solver != "rk4" && request.solver != "exact" && request.solver != "continuum")
-    throw SceneError("--solver " + request.solver + ": expected rk4, exact or continuum");
-  if (request.solver == "continuum" && scene.drive.type == DriveType::Impulses)
+  if (request.solver == Solver::Continuum && scene.drive.type == DriveType::Impulses)
     throw SceneError(scene.path +
                      ": the continuum formula Eq. (sum) needs a drive with values; impulses are "
                      "delta functions. Use --solver exact or rk4");
@@ -177,8 +182,10 @@ void check_run_request(const SceneDesc& scene, const RunRequest& request) {
 
 RunOutcome run_scene(const SceneDesc& scene, const RunRequest& request, RowSink* sink) {
   check_run_request(scene, request);
-  if (request.solver == "rk4") return run_rk4(scene, request, sink);
-  return run_formula(scene, request, sink);
+  RunOutcome outcome = request.solver == Solver::Rk4 ? run_rk4(scene, request, sink)
+                                                     : run_formula(scene, request, sink);
+  if (sink && outcome.status == 0) sink->end(outcome);
+  return outcome;
 }
 
 }  // namespace cb

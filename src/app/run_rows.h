@@ -14,9 +14,11 @@
 #include <string>
 #include <vector>
 
+#include "app/solver.h"
 #include "exact/first_break.h"
 #include "physics/chain.h"
 #include "physics/energy.h"
+#include "physics/integrator.h"
 #include "physics/simd.h"
 #include "scene/scene.h"
 
@@ -28,8 +30,13 @@ struct RunRow {
   double tau = 0.0, f = 0.0, energy = 0.0, kinetic = 0.0, potential = 0.0;
   const std::vector<double>* phi = nullptr;
   const std::vector<double>* psi = nullptr;  // null unless RunRequest::psi
+  const std::vector<double>* vel = nullptr;  // psi' (d psi_j / d tau): with psi
 };
 
+struct RunOutcome;
+
+// Where a run's rows go (the CSV, the HDF5 file, the Python module's arrays): begin once,
+// row for each kept row, end once with the outcome when the run was not stopped.
 class RowSink {
  public:
   virtual ~RowSink() = default;
@@ -37,15 +44,25 @@ class RowSink {
   // stops after a break), so a sink can reserve its storage once.
   virtual void begin(int beads, bool with_psi, std::int64_t max_rows) = 0;
   virtual void row(const RunRow& row) = 0;
+  // After the last row of a run that reached its end (not after a stop or a failure): the
+  // breaks, the energy books and the SIMD path, for outputs that record them.
+  virtual void end(const RunOutcome&) {}
 };
 
 struct RunRequest {
-  std::string solver = "rk4";  // rk4 | exact | continuum
-  int every = 1;               // one row every K steps of dt
+  Solver solver = Solver::Rk4;
+  int every = 1;  // one row every K steps of dt
   bool psi = false;
   int threads = 1;
   const std::atomic<bool>* stop = nullptr;        // polled once a step; set: status 130
   std::function<void(double steps)> on_progress;  // steps done so far, out of max_steps
+  // Long runs (rk4; app/run_checkpoint.h): start from a checkpoint's state instead of rest
+  // (rows continue after it: the row of its step was written before), and a hook that sees the
+  // integrator between steps (after every step, or temporal block) and once more, with
+  // `stopped` true, when the stop flag ended the run.
+  const ChainState* resume_state = nullptr;
+  Integrator::Cursor resume_cursor;
+  std::function<void(const Integrator& sim, bool stopped)> on_step;
 };
 
 struct RunOutcome {
@@ -61,6 +78,11 @@ struct RunOutcome {
   std::optional<FirstBreak> exact_break;  // exact solver with a threshold (not expr)
   std::optional<SimdPath> simd;           // rk4 only: the kernel's instruction set
 };
+
+// The last step a run of the scene can reach: t_end on the step grid. A run with after_break
+// may stop earlier (at the first grid step at or past the first break plus after_break), which
+// only the run can tell, so this is the bound that rows, progress and estimates are sized by.
+std::int64_t planned_steps(const SceneDesc& scene);
 
 // Throws SceneError for a request the scene cannot serve (every < 1, continuum + impulses,
 // continuum for a chain of unequal beads or springs).

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "app/csv.h"
+#include "app/json_text.h"
 #include "snapshot/stack.h"
 
 namespace cb {
@@ -156,18 +157,17 @@ std::vector<BreakEvent> RunSet::breaks(std::size_t run) const {
 }
 
 std::string RunSet::json(const std::string& gl) const {
-  std::string j = plan_json(scenes_[0], plan_, gl, breaks(0));
-  if (scenes_.size() == 1) return j;
-  std::string runs = ",\"runs\":[";
-  for (std::size_t i = 0; i < scenes_.size(); ++i) {
-    const RenderPlan& p = plan_;
-    runs += (i ? "," : "") + std::string("{\"scene\":") + json_string(scenes_[i].path) +
-            ",\"title\":" + json_string(scenes_[i].title) +
-            ",\"label\":" + json_string(labels_[i]) + ",\"breaks\":" + breaks_json(p, breaks(i)) +
-            "}";
+  Json j = plan_json(scenes_[0], plan_, gl, breaks(0));
+  if (scenes_.size() > 1) {
+    Json runs = Json::array();
+    for (std::size_t i = 0; i < scenes_.size(); ++i)
+      runs.push_back({{"scene", scenes_[i].path},
+                      {"title", scenes_[i].title},
+                      {"label", labels_[i]},
+                      {"breaks", breaks_json(plan_, breaks(i))}});
+    j["runs"] = std::move(runs);
   }
-  j.insert(j.size() - 1, runs + "]");
-  return j;
+  return json_text(j);
 }
 
 }  // namespace cb

@@ -13,6 +13,7 @@
 
 #include "app/commands.h"
 #include "app/csv.h"
+#include "app/h5_sweep_file.h"
 #include "app/progress.h"
 #include "app/sweep_setup.h"
 #include "app/sweep_values.h"
@@ -64,13 +65,16 @@ long peak_memory_kib() {
 }  // namespace
 
 int sweep_command(const SweepOptions& o) {
-  if (o.solver != "rk4" && o.solver != "exact")
-    throw SceneError("--solver " + o.solver + ": sweep supports rk4 or exact");
+  check_sweep_solver(o.solver);
   if (record_path(o.csv) == o.csv)
     throw SceneError("--csv " + o.csv + ": the sweep's record goes to " + o.csv +
                      " (the CSV's name with .json); name the CSV .csv");
   const auto start = std::chrono::steady_clock::now();
   const Grid grid = sweep_grid(o);
+  if (!o.submit.empty() && !o.h5.empty())
+    throw GridError("--h5 " + o.h5 +
+                    ": an array's shards are merged as CSV; write HDF5 from a sweep on this "
+                    "machine (drop --submit) or drop --h5");
   if (!o.submit.empty()) return submit_sweep(o, grid);
   if (o.tasks > 0 || o.wait || !o.sbatch_args.empty() || o.max_running > 0)
     throw GridError(
@@ -86,6 +90,7 @@ int sweep_command(const SweepOptions& o) {
   const std::vector<SceneDesc> scenes = point_scenes(o, grid, range);
   // The CSV and its record are one set: a second sweep or a merge to the same name is refused
   // while this one runs (output_lock.h), so the pair never comes from two runs.
+  if (!o.h5.empty()) check_output_path(o.h5, "out.h5");
   const OutputLock lock(o.csv);
   OutputFile out(o.csv);
   OutputFile out_record(record_path(o.csv));
@@ -116,6 +121,8 @@ int sweep_command(const SweepOptions& o) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   record.peak_memory_kib = peak_memory_kib();
   record.host = host_name();
+  // The HDF5 table before the record, which says the sweep's files are complete.
+  if (!o.h5.empty()) write_h5_sweep(o.h5, grid, range, results, record);
   out_record.write(record_json(record));
   out_record.commit();
   if (!o.quiet)

@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "app/csv.h"
+#include "app/sweep_values.h"
 #include "resources/resources.h"  // kMaxSweepValues
 #include "scene/scene_hash.h"
 #include "version.h"  // CHAINBREAK_VERSION (src/cmake/version.cmake)
@@ -85,10 +86,7 @@ std::vector<SceneDesc> point_scenes(const SweepOptions& o, const Grid& grid, Poi
     for (std::size_t k = 0; k < values.size(); ++k)
       settings.push_back({grid.axes[k].key, values[k], axis_origin(grid.axes[k], values[k])});
     scenes.push_back(variations.with(settings));
-    if (o.solver == "exact" && scenes.back().drive.type == DriveType::Expr)
-      throw SceneError(
-          o.scene +
-          ": the exact first break has no closed form for an expr drive; use --solver rk4");
+    check_sweep_scene(scenes.back(), o.solver);
   }
   return scenes;
 }
@@ -108,8 +106,9 @@ MemoryEstimate sweep_memory(const SweepOptions& o, const Grid& grid, PointRange 
   // and the scene's strings are copied into each.
   m.needs.push_back({"scenes of the points", points * scene_bytes(base)});
   // One run per job at a time: RK4's arrays, and the exact solver's N x N tables too.
-  const double run = rk4_bytes(beads) + (o.solver == "exact" ? exact_table_bytes(beads) : 0.0);
-  m.needs.push_back({(o.solver == "exact" ? "exact tables and state of " : "RK4 state of ") +
+  const bool exact = o.solver == Solver::Exact;
+  const double run = rk4_bytes(beads) + (exact ? exact_table_bytes(beads) : 0.0);
+  m.needs.push_back({(exact ? "exact tables and state of " : "RK4 state of ") +
                          std::to_string(static_cast<long long>(jobs)) + " run(s) at once",
                      jobs * run});
   m.needs.push_back({"CSV text", points * csv_row_bytes(grid.axes.size() + 2.0)});
@@ -121,7 +120,7 @@ ShardRecord sweep_record(const SweepOptions& o, const Grid& grid) {
   r.version = CHAINBREAK_VERSION;
   r.scene = o.scene;
   r.scene_hash = scene_hash(o.scene, o.overrides);
-  r.solver = o.solver;
+  r.solver = solver_name(o.solver);
   r.header = grid.csv_header();
   r.grid = grid;
   r.command = {"sweep", fs::absolute(o.scene).string()};
@@ -132,7 +131,7 @@ ShardRecord sweep_record(const SweepOptions& o, const Grid& grid) {
     r.command.push_back(a.spec.substr(0, space));
     r.command.push_back(a.spec.substr(space + 1));
   }
-  r.command.insert(r.command.end(), {"--solver", o.solver});
+  r.command.insert(r.command.end(), {"--solver", solver_name(o.solver)});
   return r;
 }
 

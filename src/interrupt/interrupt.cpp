@@ -7,6 +7,7 @@
 namespace cb {
 
 std::atomic<bool> g_interrupted{false};
+std::atomic<bool> g_checkpoint_requested{false};
 
 namespace {
 
@@ -29,6 +30,23 @@ void install_interrupt_handler() {
   action.sa_flags = SA_RESTART;  // a write() in progress finishes; the loops see the flag
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
+}
+
+namespace {
+
+void on_checkpoint_signal(int) {
+  g_checkpoint_requested.store(true);
+}
+
+}  // namespace
+
+void install_checkpoint_signal() {
+  struct sigaction action;
+  std::memset(&action, 0, sizeof action);
+  action.sa_handler = on_checkpoint_signal;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = SA_RESTART;
+  sigaction(SIGUSR1, &action, nullptr);
 }
 
 int interrupt_status() {

@@ -20,6 +20,11 @@ extern std::atomic<bool> g_interrupted;  // set by the handler; long loops poll 
 // Installs the handler for SIGINT and SIGTERM (once, at the start of main).
 void install_interrupt_handler();
 
+// `run --checkpoint`: SIGUSR1 (Slurm's --signal=B:USR1@T) asks for a checkpoint and the run
+// goes on. Installed only by that command: elsewhere SIGUSR1 keeps its default (terminate).
+extern std::atomic<bool> g_checkpoint_requested;
+void install_checkpoint_signal();
+
 // 130 after SIGINT, 143 after SIGTERM (128 + the signal's number); 130 when none came.
 int interrupt_status();
 // "SIGINT" or "SIGTERM".

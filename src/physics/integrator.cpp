@@ -709,4 +709,30 @@ double rk4_stability_limit_uncached(int beads, double gamma) {
 
 }  // namespace
 
+// Checkpoints (issue #26): the rest of Impl is scratch (next-step buffers, tiles, the drive's
+// cache of its last value) or decides only how steps are grouped (temporal blocks, small runs),
+// which never changes a bit of the result (tests/test_blocking.cpp), so a restored run starts
+// it afresh.
+Integrator::Cursor Integrator::cursor() const {
+  return {impl_->next_kick, impl_->next_breakpoint};
+}
+
+void Integrator::restore(const ChainState& state, const Cursor& cursor) {
+  assert(state.psi.size() == state_.psi.size() && state.vel.size() == state_.vel.size());
+  // Copied into the arrays made at construction (zero_array's pages), not swapped for others.
+  std::copy(state.psi.begin(), state.psi.end(), state_.psi.begin());
+  std::copy(state.vel.begin(), state.vel.end(), state_.vel.begin());
+  state_.broken = state.broken;
+  state_.string_broken = state.string_broken;
+  state_.step = state.step;
+  state_.tau = state.tau;
+  state_.work = state.work;
+  state_.dissipated = state.dissipated;
+  state_.break_loss = state.break_loss;
+  state_.breaks = state.breaks;
+  impl_->next_kick = static_cast<std::size_t>(cursor.next_kick);
+  impl_->next_breakpoint = static_cast<std::size_t>(cursor.next_breakpoint);
+  error_.clear();
+}
+
 }  // namespace cb

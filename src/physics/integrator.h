@@ -97,6 +97,15 @@ class Integrator {
   double force_now() const;  // f(tau) acting on bead N now (0 after the pull string broke)
   const std::string& error() const { return error_; }
 
+  // Checkpoints (physics/integrator_checkpoint.cpp, issue #26): besides state(), where the
+  // integrator stands in the drive's kicks and breakpoints; restore() continues from them on
+  // an integrator of the same params, forcing and dt, bit for bit as the run that saved them.
+  struct Cursor {
+    std::uint64_t next_kick = 0, next_breakpoint = 0;
+  };
+  Cursor cursor() const;
+  void restore(const ChainState& state, const Cursor& cursor);
+
  private:
   struct Impl;
   ChainParams params_;

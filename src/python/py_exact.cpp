@@ -72,7 +72,7 @@ class Continuum {
  public:
   explicit Continuum(const Scene& source) : scene_(source.resolve()) {
     RunRequest request;
-    request.solver = "continuum";
+    request.solver = Solver::Continuum;
     check_run_request(scene_, request);  // the same refusal as run(solver="continuum")
     const Forcing forcing = make_forcing(scene_.drive);
     f_ = [forcing](double tau) { return forcing(tau); };

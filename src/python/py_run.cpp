@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "app/csv.h"
+#include "app/h5_run_file.h"
 #include "app/run_rows.h"
 #include "interruptible.h"
 #include "physics/energy.h"
@@ -28,7 +29,7 @@ class ArraySink : public RowSink {
       const auto rows = static_cast<std::size_t>(max_rows);
       for (auto* v : {&tau, &f, &energy, &kinetic, &potential}) v->reserve(rows);
       phi.reserve(rows * beads);
-      if (with_psi) psi.reserve(rows * beads);
+      if (with_psi) psi.reserve(rows * beads), psi_dot.reserve(rows * beads);
     }
   }
   void row(const RunRow& r) override {
@@ -39,10 +40,11 @@ class ArraySink : public RowSink {
     potential.push_back(r.potential);
     phi.insert(phi.end(), r.phi->begin(), r.phi->end());
     if (r.psi) psi.insert(psi.end(), r.psi->begin(), r.psi->end());
+    if (r.vel) psi_dot.insert(psi_dot.end(), r.vel->begin(), r.vel->end());
   }
   int beads_ = 0;
   bool with_psi_ = false;
-  std::vector<double> tau, f, energy, kinetic, potential, phi, psi;
+  std::vector<double> tau, f, energy, kinetic, potential, phi, psi, psi_dot;
 };
 
 struct Result {
@@ -52,12 +54,85 @@ struct Result {
   std::optional<double> threshold;
   std::int64_t steps = 0;
   double tau_end = 0;
-  py::object tau, f, energy, kinetic, potential, phi, psi = py::none();
+  py::object tau, f, energy, kinetic, potential, phi, psi = py::none(), psi_dot = py::none();
   std::vector<std::pair<int, double>> breaks;
   std::optional<std::pair<int, double>> exact_first_break;
   std::optional<double> energy_balance_error;
   int every = 1;
+  // What Result.save writes besides the arrays (app/h5_run_file.h).
+  RunDescription description;
+  RunOutcome outcome;
 };
+
+// The Result of a run (its arrays handed to numpy without a copy).
+Result make_result(RunDescription d, RunOutcome outcome, std::vector<double> tau,
+                   std::vector<double> f, std::vector<double> energy, std::vector<double> kinetic,
+                   std::vector<double> potential, std::vector<double> phi, std::vector<double> psi,
+                   std::vector<double> psi_dot) {
+  Result r;
+  r.scene = d.scene;
+  r.title = d.title;
+  r.solver = solver_name(d.solver);
+  r.beads = d.beads;
+  r.gamma = d.gamma;
+  r.dt = d.dt;
+  r.every = d.every;
+  r.threshold = d.threshold;
+  r.steps = outcome.steps;
+  r.tau_end = outcome.tau_end;
+  const auto rows = static_cast<py::ssize_t>(tau.size());
+  const py::ssize_t n = d.beads;
+  r.tau = to_numpy(std::move(tau), {rows});
+  r.f = to_numpy(std::move(f), {rows});
+  r.energy = to_numpy(std::move(energy), {rows});
+  r.kinetic = to_numpy(std::move(kinetic), {rows});
+  r.potential = to_numpy(std::move(potential), {rows});
+  r.phi = to_numpy(std::move(phi), {rows, n});
+  if (d.psi) {
+    r.psi = to_numpy(std::move(psi), {rows, n});
+    r.psi_dot = to_numpy(std::move(psi_dot), {rows, n});
+  }
+  for (const BreakEvent& b : outcome.breaks) r.breaks.emplace_back(b.spring, b.tau);
+  if (outcome.exact_break && outcome.exact_break->broke)
+    r.exact_first_break = std::make_pair(outcome.exact_break->spring, outcome.exact_break->tau);
+  if (outcome.books) r.energy_balance_error = outcome.books->balance_error;
+  r.description = std::move(d);
+  r.outcome = std::move(outcome);
+  return r;
+}
+
+std::vector<double> values_of(const py::object& array) {
+  const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(array);
+  return {a.data(), a.data() + a.size()};
+}
+
+// Result.save(path, compress=0): the HDF5 file `run --h5` writes for the same run.
+void save(const Result& r, const std::string& path, int compress) {
+  if (compress < 0 || compress > 9)
+    throw SceneError("save: compress " + std::to_string(compress) + ": expected 0 (none) to 9");
+  LoadedRun run;
+  run.description = r.description;
+  run.outcome = r.outcome;
+  run.rows = static_cast<std::uint64_t>(py::len(r.tau));
+  run.tau = values_of(r.tau);
+  run.f = values_of(r.f);
+  run.energy = values_of(r.energy);
+  run.kinetic = values_of(r.kinetic);
+  run.potential = values_of(r.potential);
+  run.phi = values_of(r.phi);
+  if (r.description.psi) run.psi = values_of(r.psi), run.psi_dot = values_of(r.psi_dot);
+  py::gil_scoped_release release;
+  save_h5_run(path, run, compress);
+}
+
+// chainbreak.load(path): a Result from a file of `run --h5` or Result.save.
+Result load(const std::string& path) {
+  LoadedRun run = load_h5_run(path);
+  return make_result(std::move(run.description), std::move(run.outcome), std::move(run.tau),
+                     std::move(run.f), std::move(run.energy), std::move(run.kinetic),
+                     std::move(run.potential), std::move(run.phi), std::move(run.psi),
+                     std::move(run.psi_dot));
+}
 
 std::string html_escape(const std::string& text) {
   std::string out;
@@ -109,7 +184,7 @@ std::string result_html(const Result& r) {
 Result run(const Scene& source, const std::string& solver, int every, bool psi, int threads) {
   const SceneDesc scene = source.resolve();
   RunRequest request;
-  request.solver = solver;
+  request.solver = parse_solver(solver);
   request.every = every;
   request.psi = psi;
   request.threads = threads;
@@ -122,31 +197,10 @@ Result run(const Scene& source, const std::string& solver, int every, bool psi, 
     PyErr_SetNone(PyExc_KeyboardInterrupt);
     throw py::error_already_set();
   }
-  Result r;
-  r.scene = scene.name;
-  r.title = scene.title;
-  r.solver = solver;
-  r.beads = scene.chain.beads;
-  r.gamma = scene.chain.gamma;
-  r.dt = scene.integrator.dt;
-  r.every = every;
-  if (scene.chain.breakable()) r.threshold = scene.chain.threshold;
-  r.steps = outcome.steps;
-  r.tau_end = outcome.tau_end;
-  const auto rows = static_cast<py::ssize_t>(sink.tau.size());
-  const py::ssize_t n = scene.chain.beads;
-  r.tau = to_numpy(std::move(sink.tau), {rows});
-  r.f = to_numpy(std::move(sink.f), {rows});
-  r.energy = to_numpy(std::move(sink.energy), {rows});
-  r.kinetic = to_numpy(std::move(sink.kinetic), {rows});
-  r.potential = to_numpy(std::move(sink.potential), {rows});
-  r.phi = to_numpy(std::move(sink.phi), {rows, n});
-  if (psi) r.psi = to_numpy(std::move(sink.psi), {rows, n});
-  for (const BreakEvent& b : outcome.breaks) r.breaks.emplace_back(b.spring, b.tau);
-  if (outcome.exact_break && outcome.exact_break->broke)
-    r.exact_first_break = std::make_pair(outcome.exact_break->spring, outcome.exact_break->tau);
-  if (outcome.books) r.energy_balance_error = outcome.books->balance_error;
-  return r;
+  return make_result(describe_run(scene, source.overrides(), request.solver, every, psi), outcome,
+                     std::move(sink.tau), std::move(sink.f), std::move(sink.energy),
+                     std::move(sink.kinetic), std::move(sink.potential), std::move(sink.phi),
+                     std::move(sink.psi), std::move(sink.psi_dot));
 }
 
 }  // namespace
@@ -171,16 +225,23 @@ void bind_run(py::module_& m) {
       .def_readonly("potential", &Result::potential)
       .def_readonly("phi", &Result::phi, "[rows, N]: phi[:, j-1] is spring j's extension")
       .def_readonly("psi", &Result::psi, "[rows, N] with psi=True, else None")
+      .def_readonly("psi_dot", &Result::psi_dot,
+                    "[rows, N]: d psi / d tau with psi=True, else None")
       .def_readonly("breaks", &Result::breaks, "[(spring, tau), ...] in order (rk4)")
       .def_readonly("exact_first_break", &Result::exact_first_break,
                     "(spring, tau) of the exact solution (solver='exact' with a threshold)")
       .def_readonly("energy_balance_error", &Result::energy_balance_error)
+      .def("save", &save, py::arg("path"), py::arg("compress") = 0,
+           "Write the run as HDF5, as `chainbreak run --h5` does (compress: deflate level 1-9, "
+           "0 none); chainbreak.load(path) reads it back.")
       .def("_repr_html_", &result_html)
       .def("__repr__", [](const Result& r) {
         return "<chainbreak.Result " + r.scene + " " + r.solver + ": " +
                std::to_string(py::len(r.tau)) + " rows, N=" + std::to_string(r.beads) + ", " +
                std::to_string(r.breaks.size()) + " breaks>";
       });
+  m.def("load", &load, py::arg("path"),
+        "A Result from an HDF5 file written by `chainbreak run --h5` or Result.save.");
   m.def("run", &run, py::arg("scene"), py::arg("solver") = "rk4", py::arg("every") = 1,
         py::arg("psi") = false, py::arg("threads") = 1,
         "Run a scene like `chainbreak run`: solver 'rk4' (with breaking), 'exact' or "

@@ -18,7 +18,8 @@ namespace {
 
 using Values = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-py::dict sweep(const Scene& source, const py::dict& vary, const std::string& solver, int jobs) {
+py::dict sweep(const Scene& source, const py::dict& vary, const std::string& solver_name,
+               int jobs) {
   if (vary.empty())
     throw SceneError("sweep: vary is empty; give e.g. vary={'drive.beta': numpy.linspace(...)}");
   // The grid is `chainbreak sweep`'s (cluster/grid.h): the cartesian product of the keys'
@@ -32,6 +33,7 @@ py::dict sweep(const Scene& source, const py::dict& vary, const std::string& sol
     add_axis(grid, {name, {array.data(), array.data() + array.size()}, "vary['" + name + "']"});
   }
   check_grid_size(grid, static_cast<std::size_t>(kMaxSweepValues));
+  const Solver solver = parse_solver(solver_name);
   // Every point is set in memory on the scene read once, and checked before any work: a bad
   // value fails now, named by its key and value.
   const SceneVariations variations = source.variations();

@@ -40,7 +40,8 @@ void BM_SweepScenes(benchmark::State& state) {
 }
 
 // Args: {jobs}.
-void sweep(benchmark::State& state, const std::string& solver) {
+void sweep(benchmark::State& state, const std::string& solver_name) {
+  const cb::Solver solver = cb::parse_solver(solver_name);
   const auto scenes = sweep_scenes();
   const int jobs = static_cast<int>(state.range(0));
   int broke = 0;
@@ -66,7 +67,7 @@ void BM_SweepRk4Single(benchmark::State& state) {
   for (auto _ : state) {
     const auto results =
         cb::parallel_first_breaks(static_cast<int>(scenes.size()), jobs, [&](int i) {
-          return cb::sweep_first_break(scenes[static_cast<std::size_t>(i)], "rk4", nullptr);
+          return cb::sweep_first_break(scenes[static_cast<std::size_t>(i)], cb::Solver::Rk4, nullptr);
         });
     benchmark::DoNotOptimize(results.data());
   }

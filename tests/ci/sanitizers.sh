@@ -138,7 +138,11 @@ tsan() {
   stamp "tsan: done"
 }
 
-HARNESSES=(fuzz_scene fuzz_set fuzz_table_csv fuzz_expr fuzz_script fuzz_options fuzz_merge)
+# fuzz_h5_run (chainbreak.load) is built but not run here: libhdf5 1.10.8 itself crashes on
+# damaged files (a flipped byte of a variable-length string attribute segfaults in H5HG_read,
+# found by that harness's seed mutations), which no check of ours can prevent; run it by hand.
+HARNESSES=(fuzz_scene fuzz_set fuzz_table_csv fuzz_expr fuzz_script fuzz_options fuzz_merge
+           fuzz_checkpoint)
 
 # One harness for FUZZ_SECONDS from its committed seeds; new inputs go to a scratch folder.
 # A finding (crash, sanitizer report, FUZZ_CHECK, a 10 s hang, 2 GB) stops it with status

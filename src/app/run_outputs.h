@@ -1,0 +1,74 @@
+// The files a run writes: the CSV, the HDF5 file. `run` and the Python module (Result.save)
+// write through them; each is a RowSink (run_rows.h) fed the same RunRow values, so every file
+// holds the same doubles, and each is written beside its name and renamed into place by
+// commit(), so a reader never sees half a file.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/run_rows.h"
+#include "scene/scene.h"
+
+namespace cb {
+
+// One file of a run's rows.
+class RunFile : public RowSink {
+ public:
+  // Finishes the file and renames it into place; throws OutputError (disk full, ...).
+  virtual void commit() = 0;
+  // A checkpoint: makes what was written durable and returns how far it got (the CSV: bytes).
+  // Only files made resumable support it (0 otherwise).
+  virtual std::uint64_t sync() { return 0; }
+};
+
+// Every file a run writes, fed the same rows and committed together.
+class RunFiles : public RowSink {
+ public:
+  void add(std::unique_ptr<RunFile> file) { files_.push_back(std::move(file)); }
+  bool empty() const { return files_.empty(); }
+  void begin(int beads, bool with_psi, std::int64_t max_rows) override;
+  void row(const RunRow& row) override;
+  void end(const RunOutcome& outcome) override;
+  void commit();
+  // The CSV's length for a checkpoint (RunFile::sync of each; the first non-zero one).
+  std::uint64_t sync();
+
+ private:
+  std::vector<std::unique_ptr<RunFile>> files_;
+};
+
+// The CSV contract: header tau,f,energy,kinetic,potential,phi_1..phi_N[,psi_1..psi_N], then
+// each row's numbers in shortest round-trip form (csv.h). The file is opened at once, so an
+// unwritable folder is reported before the run.
+std::unique_ptr<RunFile> csv_run_file(const std::string& path, int beads, bool with_psi);
+// The same CSV, resumable (output/resumable_file.h): begun afresh, or (resume_at) continued
+// from a checkpoint's length, header included.
+std::unique_ptr<RunFile> resumable_csv_run_file(const std::string& path, int beads, bool with_psi,
+                                                std::optional<std::uint64_t> resume_at);
+
+// What a run's HDF5 file records about it besides its rows and its outcome: plain values, so
+// a file read back (h5_run_file.h) describes itself as the run did.
+struct RunDescription {
+  std::string scene;  // the scene's name
+  std::string title;
+  std::string scene_path;  // as given
+  std::string scene_text;  // the scene file's text (empty when it has none)
+  std::string scene_hash;  // scene/scene_hash.h of the path and the overrides
+  std::string parameters;  // the scene after overrides, as TOML (scene/scene_writer.h)
+  std::string overrides;   // "key=value" lines, as given
+  Solver solver = Solver::Rk4;
+  int every = 1;
+  bool psi = false;
+  int beads = 0;
+  double gamma = 0.0, dt = 0.0;
+  std::optional<double> threshold;  // none: unbreakable
+};
+
+// The description of a run of `scene` (read from scene.path with `overrides`).
+RunDescription describe_run(const SceneDesc& scene, const std::vector<Override>& overrides,
+                            Solver solver, int every, bool psi);
+
+}  // namespace cb

@@ -1,0 +1,220 @@
+# `run --checkpoint` / `run --resume` (issue #26): a run stopped by SIGTERM at a random point,
+# or killed by SIGKILL after a periodic checkpoint, and resumed, writes the same CSV and JSON
+# summary byte for byte as the run left alone; a damaged, truncated, foreign or stale
+# checkpoint is refused with exit 2; a checkpoint that cannot be written (file-size limit)
+# leaves the previous one whole. Run by ctest (tests/CMakeLists.txt) with CHAINBREAK_EXE and
+# CHAINBREAK_SCENES set.
+import json
+import os
+import pathlib
+import random
+import resource
+import shutil
+import signal
+import struct
+import subprocess
+import time
+
+import pytest
+
+EXE = os.environ.get("CHAINBREAK_EXE", "build/chainbreak")
+SCENES = pathlib.Path(os.environ.get("CHAINBREAK_SCENES", "scenes"))
+
+# N = 2e5 (temporal blocking on), 2000 steps, a row every 250 steps with psi: about 3 s.
+BIG = ["--set", "chain.beads=200000", "--set", "integrator.t_end=20", "--every", "250", "--psi"]
+# A small chain that breaks (after_break) and runs long enough to be stopped: about 2 s.
+SMALL = ["--set", "chain.beads=2000", "--set", "integrator.t_end=3000", "--set",
+         "drive.beta=0.002", "--every", "50", "--psi"]
+
+
+def run(args, cwd, **kw):
+    return subprocess.run([EXE, "run", *map(str, args), "-q"], cwd=cwd, capture_output=True,
+                          text=True, **kw)
+
+
+_REFERENCES = {}
+
+
+def reference(tmp_path, scene, opts):
+    """The run left alone (computed once per scene and options): its CSV and summary."""
+    key = (str(scene), tuple(opts))
+    if key not in _REFERENCES:
+        ref = tmp_path / "ref"
+        ref.mkdir()
+        done = run([scene, *opts, "--csv", "out.csv"], ref)
+        assert done.returncode == 0, done.stderr
+        _REFERENCES[key] = ((ref / "out.csv").read_bytes(), done.stdout)
+    return _REFERENCES[key]
+
+
+def stop_and_resume(tmp_path, name, scene, opts, stop, extra=()):
+    """Starts the run with a checkpoint, calls stop(process, folder), resumes until done."""
+    work = tmp_path / name
+    work.mkdir()
+    p = subprocess.Popen([EXE, "run", str(scene), *opts, "--csv", "out.csv", "--checkpoint",
+                          "run.ckpt", *extra, "-q"], cwd=work, stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, text=True)
+    stop(p, work)
+    out, err = p.communicate()
+    if p.returncode == 0:  # finished before the signal: nothing to resume
+        return work, out, p.returncode
+    done = run(["--resume", "run.ckpt"], work)
+    assert done.returncode == 0, done.stderr
+    assert not (work / "run.ckpt").exists()  # a finished run removes its checkpoint
+    return work, done.stdout, p.returncode
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3])
+def test_sigterm_at_a_random_point_then_resume_is_byte_identical(tmp_path, seed):
+    scene = SCENES / "anomalous_breaking.toml"
+    csv, summary = reference(tmp_path, scene, BIG)
+
+    def stop(p, work):
+        time.sleep(random.Random(seed).uniform(0.3, 2.0))
+        p.send_signal(signal.SIGTERM)
+
+    work, out, status = stop_and_resume(tmp_path, f"seed{seed}", scene, BIG, stop)
+    assert status in (0, 143)
+    assert (work / "out.csv").read_bytes() == csv
+    assert out == summary
+
+
+def test_sigint_exits_130_and_resumes(tmp_path):
+    scene = SCENES / "anomalous_breaking.toml"
+    csv, summary = reference(tmp_path, scene, SMALL)
+
+    def stop(p, work):
+        time.sleep(0.5)
+        p.send_signal(signal.SIGINT)
+
+    work, out, status = stop_and_resume(tmp_path, "int", scene, SMALL, stop)
+    assert status == 130
+    assert (work / "out.csv").read_bytes() == csv and out == summary
+    assert json.loads(out)["breaks"]  # the break and after_break land after the resume
+
+
+def test_sigkill_after_a_periodic_checkpoint_then_resume(tmp_path):
+    scene = SCENES / "anomalous_breaking.toml"
+    csv, summary = reference(tmp_path, scene, SMALL)
+
+    def stop(p, work):
+        # Wait for a periodic checkpoint (every 0.1 s), then a little more: rows written after
+        # it are cut off again by the resume.
+        for _ in range(200):
+            if (work / "run.ckpt").exists():
+                break
+            time.sleep(0.02)
+        time.sleep(0.35)
+        p.send_signal(signal.SIGKILL)
+
+    work, out, status = stop_and_resume(tmp_path, "kill", scene, SMALL, stop,
+                                        ["--checkpoint-every", "0.1"])
+    assert status == -signal.SIGKILL
+    assert (work / "out.csv").read_bytes() == csv and out == summary
+
+
+def test_sigusr1_writes_a_checkpoint_and_the_run_goes_on(tmp_path):
+    scene = SCENES / "anomalous_breaking.toml"
+    csv, summary = reference(tmp_path, scene, SMALL)
+    seen = []
+
+    def stop(p, work):
+        time.sleep(0.4)
+        p.send_signal(signal.SIGUSR1)
+        for _ in range(200):
+            if (work / "run.ckpt").exists():
+                seen.append(True)
+                break
+            time.sleep(0.01)
+
+    work, out, status = stop_and_resume(tmp_path, "usr1", scene, SMALL, stop)
+    assert status == 0 and seen == [True]
+    assert (work / "out.csv").read_bytes() == csv and out == summary
+
+
+def checkpointed(tmp_path, scene_path, outputs=("--csv", "out.csv")):
+    """A run stopped by SIGTERM with its checkpoint: the folder."""
+    work = tmp_path / "stopped"
+    work.mkdir()
+    p = subprocess.Popen([EXE, "run", str(scene_path), *SMALL, *outputs,
+                          "--checkpoint", "run.ckpt", "-q"], cwd=work, stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE)
+    time.sleep(0.5)
+    p.send_signal(signal.SIGTERM)
+    p.communicate()
+    assert p.returncode == 143 and (work / "run.ckpt").exists()
+    return work
+
+
+def fnv1a(data):
+    h = 1469598103934665603
+    for b in data:
+        h = ((h ^ b) * 1099511628211) % (1 << 64)
+    return h
+
+
+def refused(work, what):
+    done = run(["--resume", "run.ckpt"], work)
+    assert done.returncode == 2, done.stderr
+    assert what in done.stderr and "run.ckpt" in done.stderr
+    return done.stderr
+
+
+def test_damaged_truncated_foreign_and_stale_checkpoints_are_refused(tmp_path):
+    scene = tmp_path / "scene.toml"
+    shutil.copy(SCENES / "anomalous_breaking.toml", scene)
+    work = checkpointed(tmp_path, scene)
+    good = (work / "run.ckpt").read_bytes()
+
+    flipped = bytearray(good)
+    flipped[len(good) // 2] ^= 0x01
+    (work / "run.ckpt").write_bytes(bytes(flipped))
+    refused(work, "checksum does not match")
+
+    (work / "run.ckpt").write_bytes(good[: len(good) - 100])
+    refused(work, "truncated")
+
+    (work / "run.ckpt").write_bytes(b"tau,f\n" + good[6:])
+    refused(work, "not a chainbreak checkpoint")
+
+    # Another version: the version string rewritten, the checksum made right again.
+    payload = bytearray(good[24:])
+    n = struct.unpack("<Q", payload[:8])[0]
+    version = payload[8 : 8 + n]
+    payload[8 : 8 + n] = b"9" * n
+    (work / "run.ckpt").write_bytes(good[:16] + struct.pack("<Q", fnv1a(payload)) + payload)
+    assert version != b"9" * n
+    refused(work, "written by chainbreak " + "9" * n)
+
+    # The scene changed since the checkpoint.
+    (work / "run.ckpt").write_bytes(good)
+    scene.write_text(scene.read_text() + "\n# edited after the checkpoint\n")
+    refused(work, "is not the one checkpointed")
+
+
+def test_a_checkpoint_that_cannot_be_written_keeps_the_previous_one(tmp_path):
+    scene = SCENES / "anomalous_breaking.toml"
+    _, summary = reference(tmp_path, scene, SMALL)
+    work = checkpointed(tmp_path, scene, outputs=())  # the summary only: the checkpoint is
+    good = (work / "run.ckpt").read_bytes()           # the one file that grows
+
+    def small_files():  # a full disk: no file may grow past 16 KiB (the checkpoint is ~64 KiB)
+        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+        resource.setrlimit(resource.RLIMIT_FSIZE, (16384, 16384))
+
+    p = subprocess.Popen([EXE, "run", "--resume", "run.ckpt", "--checkpoint-every", "0", "-q"],
+                         cwd=work, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                         preexec_fn=small_files)
+    time.sleep(0.3)
+    p.send_signal(signal.SIGTERM)
+    _, err = p.communicate()
+    # Periodic checkpoints failed and the run went on; the one on SIGTERM failed: exit 2.
+    assert "the run goes on" in err and p.returncode == 2, err
+    assert "writing the checkpoint failed" in err
+    assert (work / "run.ckpt").read_bytes() == good  # untouched, and no stray temp file left
+    assert not [f for f in os.listdir(work) if f.startswith(".run.ckpt")]
+    done = run(["--resume", "run.ckpt"], work)
+    assert done.returncode == 0, done.stderr
+    expected = json.loads(summary)
+    del expected["csv"]
+    assert json.loads(done.stdout) == expected
