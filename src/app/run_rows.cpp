@@ -173,7 +173,7 @@ void check_run_request(const SceneDesc& scene, const RunRequest& request) {
     throw SceneError(scene.path +
                      ": the continuum formula Eq. (sum) needs a drive with values; impulses are "
                      "delta functions. Use --solver exact or rk4");
-  if (request.solver == "continuum" && !scene.chain.uniform_dynamics())
+  if (request.solver == Solver::Continuum && !scene.chain.uniform_dynamics())
     throw SceneError(scene.path +
                      ": the continuum formula Eq. (sum) is the paper's large-N limit of the "
                      "uniform chain; this chain has unequal chain.mass or chain.stiffness. Use "
