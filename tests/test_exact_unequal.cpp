@@ -211,7 +211,7 @@ TEST_CASE("continuum refuses a chain of unequal beads or springs", "[exact][uneq
   scene.drive = ramp(0.1);
   scene.integrator.t_end = 10.0;
   cb::RunRequest request;
-  request.solver = "continuum";
+  request.solver = cb::Solver::Continuum;
   CHECK_NOTHROW(cb::check_run_request(scene, request));  // the uniform chain: Eq. (sum)
   scene.chain.mass.assign(30, 1.0);
   scene.chain.mass[10] = 4.0;
@@ -225,7 +225,7 @@ TEST_CASE("continuum refuses a chain of unequal beads or springs", "[exact][uneq
     CHECK(what.find("uniform chain") != std::string::npos);   // what
     CHECK(what.find("--solver exact") != std::string::npos);  // how to fix
   }
-  request.solver = "exact";
+  request.solver = cb::Solver::Exact;
   CHECK_NOTHROW(cb::check_run_request(scene, request));
 }
 
@@ -282,7 +282,7 @@ TEST_CASE("run --solver exact: an unequal chain's energy is the drive's work", "
     }
   } rows;
   cb::RunRequest request;
-  request.solver = "exact";
+  request.solver = cb::Solver::Exact;
   request.every = 500;  // tau = 0, 5, ..., 40
   REQUIRE(cb::run_scene(scene, request, &rows).status == 0);
   REQUIRE(rows.tau.size() == 9);
