@@ -30,7 +30,7 @@ ChainCoefficients chain_coefficients(const ChainParams& params, bool per_bead_al
     c.stiffness[j - 1] = p.stiffness_of(j);
     const double phi_c = p.threshold_of(j);
     c.upper[j - 1] = phi_c;
-    c.lower[j - 1] = c.stretch_only ? -kInf : -phi_c;
+    c.lower[j - 1] = lower_bound_of(phi_c, c.stretch_only);
   }
   return c;
 }

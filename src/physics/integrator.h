@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -21,6 +22,7 @@
 
 #include "physics/chain.h"
 #include "physics/coefficients.h"
+#include "physics/crossing.h"
 #include "physics/forcing.h"
 #include "physics/simd.h"
 
@@ -106,6 +108,14 @@ class Integrator {
   Cursor cursor() const;
   void restore(const ChainState& state, const Cursor& cursor);
 
+  // Ensembles over thresholds (physics/threshold_ensemble.h): once set, no spring breaks; each
+  // interval [ta, tb] whose springs may reach their bounds (the chain's own: the loosest of the
+  // ensemble) hands its candidates here, then is committed whole. Before an ensemble member's
+  // first break its trajectory is this run's, bit for bit. Not for a chain with a pull string.
+  using CrossingWatch =
+      std::function<void(const std::vector<detail::Candidate>&, double ta, double tb)>;
+  void watch_crossings(CrossingWatch watch) { watch_ = std::move(watch); }
+
  private:
   struct Impl;
   ChainParams params_;
@@ -115,6 +125,7 @@ class Integrator {
   ChainState state_;
   std::string error_;
   std::unique_ptr<Impl> impl_;
+  CrossingWatch watch_;  // watch_crossings(); empty: springs break
 
   std::vector<double> cuts_;        // split points of the current step (reused, no allocation)
   double stage_dissipation_ = 0.0;  // energy books of the last rk4() call, applied by commit()
