@@ -3,6 +3,9 @@
 // that member alone, which is what `run` prints; and a sweep over chain.seed goes through it.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstring>
+#include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "app/sweep_values.h"
 #include "drive/drive.h"
@@ -10,6 +13,7 @@
 #include "physics/run_loop.h"
 #include "physics/threshold_ensemble.h"
 #include "scene/threshold_draw.h"
+#include "test_support.h"
 
 namespace {
 
@@ -120,4 +124,66 @@ TEST_CASE("a sweep over chain.seed runs as an ensemble and equals the values one
   cb::add_axis(grid, {"chain.seed", {1, 2, 3}, "--values chain.seed=1,2,3"});
   CHECK(cb::threshold_groups(grid, 0, grid.size()) == std::vector<std::size_t>{0, 0, 0, 1, 1, 1});
   CHECK(cb::threshold_groups(grid, 2, 3) == std::vector<std::size_t>{0, 1, 1});
+}
+
+TEST_CASE("a quasi-static slow pull breaks the weakest spring at tau ~ phi_c,min / beta",
+          "[ensemble][flaws]") {
+  // beta = 1e-4, gamma = 0.05: the chain follows the pull almost statically (friction's drag
+  // 2 gamma beta N ~ 3e-4 of the force), so every spring carries f = beta tau and the weakest,
+  // drawn by seed 1, breaks when f reaches it. Tolerance 0.5 % of tau: the ringing and the drag.
+  cb::ChainParams p = flawed(1, 6.0);
+  p.gamma = 0.05;
+  const auto weakest = std::min_element(p.thresholds.begin(), p.thresholds.end());
+  const int spring = static_cast<int>(weakest - p.thresholds.begin()) + 1;
+  cb::DriveDesc drive;
+  drive.type = cb::DriveType::Ramp;
+  drive.beta = 1e-4;
+  const double expected = *weakest / drive.beta;
+  const cb::LaneEnd end = alone(p, drive, 0.01, std::llround(1.5 * expected / 0.01));
+  REQUIRE(end.kind == cb::LaneEnd::Kind::Broke);
+  CHECK(end.first.spring == spring);
+  CHECK(end.first.tau == Approx(expected).epsilon(0.005));
+}
+
+TEST_CASE("sweep over chain.seed: integers in the CSV, each row `run` on that seed, bit for bit",
+          "[ensemble][flaws][cli]") {
+  // A beta x seed grid of scenes/flawed_chain.toml (two ensembles of five seeds); each row
+  // against `chainbreak run --set chain.seed=S --set drive.beta=B` (its shortest round-trip
+  // tau); the run's JSON lists the drawn thresholds, different for different seeds.
+  const cb::test::TempDir dir;
+  const std::string scene = std::string(CHAINBREAK_SCENES) + "/flawed_chain.toml";
+  const auto sweep = cb::test::run_chainbreak("sweep " + scene +
+                                              " --values drive.beta=0.02,0.5 --vary "
+                                              "chain.seed=99996:100000:5 --quiet --csv " +
+                                              dir.file("s.csv"));
+  INFO(sweep.err);
+  REQUIRE(sweep.status == 0);
+  std::istringstream csv(cb::test::slurp(dir.file("s.csv")));
+  std::string line;
+  std::getline(csv, line);
+  REQUIRE(line == "drive.beta,chain.seed,spring,tau");
+  int rows = 0;
+  std::vector<double> previous;
+  while (std::getline(csv, line)) {
+    std::vector<std::string> cell;
+    std::istringstream fields(line);
+    for (std::string c; std::getline(fields, c, ',');) cell.push_back(c);
+    REQUIRE(cell.size() == 4);
+    INFO(line);
+    CHECK(cell[1] == std::to_string(99996 + rows % 5));  // an integer, not 1e+05
+    const auto run = cb::test::run_chainbreak("run " + scene + " --set chain.seed=" + cell[1] +
+                                              " --set drive.beta=" + cell[0]);
+    REQUIRE(run.status == 0);
+    const auto summary = nlohmann::json::parse(run.out);
+    const auto& breaks = summary["breaks"];
+    REQUIRE(!breaks.empty());
+    CHECK(std::to_string(breaks[0]["spring"].get<int>()) == cell[2]);
+    CHECK(breaks[0]["tau"].get<double>() == std::stod(cell[3]));
+    const auto thresholds = summary["thresholds"].get<std::vector<double>>();
+    CHECK(thresholds.size() == 30);
+    CHECK(thresholds != previous);
+    previous = thresholds;
+    ++rows;
+  }
+  CHECK(rows == 10);
 }

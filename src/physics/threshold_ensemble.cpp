@@ -42,11 +42,13 @@ class Ensemble {
         next_(static_cast<std::size_t>(n_), 0) {
     assert(e.thresholds.size() == static_cast<std::size_t>(members_) * n_);
     // Per spring, the members by phi_c,j (ties by member, so the order is the same everywhere).
+    std::vector<std::pair<double, int>> keyed(static_cast<std::size_t>(members_));
     for (int j = 0; j < n_; ++j) {
+      for (int m = 0; m < members_; ++m) keyed[static_cast<std::size_t>(m)] = {phi(m, j + 1), m};
+      std::sort(keyed.begin(), keyed.end());
       auto& o = order_[static_cast<std::size_t>(j)];
       o.resize(static_cast<std::size_t>(members_));
-      std::iota(o.begin(), o.end(), 0);
-      std::stable_sort(o.begin(), o.end(), [&](int x, int y) { return phi(x, j + 1) < phi(y, j + 1); });
+      for (int m = 0; m < members_; ++m) o[static_cast<std::size_t>(m)] = keyed[static_cast<std::size_t>(m)].second;
     }
     open_ = members_;
   }
