@@ -82,7 +82,8 @@ TEST_CASE("an ensemble of Weibull seeds gives each seed's first break as Integra
   for (const double beta : {0.01, 0.1, 1.0})
     for (const double gamma : {0.0, 0.05})
       for (const auto mode : {cb::BreakMode::Abs, cb::BreakMode::Stretch}) {
-        INFO("beta " << beta << " gamma " << gamma << " stretch " << (mode == cb::BreakMode::Stretch));
+        INFO("beta " << beta << " gamma " << gamma << " stretch "
+                     << (mode == cb::BreakMode::Stretch));
         std::vector<cb::ChainParams> members;
         for (int seed = 1; seed <= 60; ++seed) {
           members.push_back(flawed(seed, 4.0, mode));
@@ -96,8 +97,7 @@ TEST_CASE("an ensemble of Weibull seeds gives each seed's first break as Integra
       }
 }
 
-TEST_CASE("an ensemble over a uniform chain's threshold gives Integrator's breaks",
-          "[ensemble]") {
+TEST_CASE("an ensemble over a uniform chain's threshold gives Integrator's breaks", "[ensemble]") {
   // The paper's chain (no arrays: the Uniform coefficient policy for each member) swept over
   // phi_c; the ensemble runs the loosest as PerBead, which gives the Uniform bits.
   std::vector<cb::ChainParams> members;

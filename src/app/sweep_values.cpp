@@ -116,8 +116,8 @@ void run_ensembles(const std::vector<SceneDesc>& scenes,
   };
   if (jobs <= 0) jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   std::vector<std::thread> pool;
-  for (std::size_t t = 1; t < std::min<std::size_t>(static_cast<std::size_t>(jobs), ensembles.size());
-       ++t)
+  for (std::size_t t = 1;
+       t < std::min<std::size_t>(static_cast<std::size_t>(jobs), ensembles.size()); ++t)
     pool.emplace_back(worker);
   worker();
   for (auto& t : pool) t.join();

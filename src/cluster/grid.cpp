@@ -105,9 +105,9 @@ GridAxis parse_vary(const std::string& text) {
     for (double& v : axis.values) v = std::round(v);
     for (std::size_t i = 1; i < axis.values.size(); ++i)
       if (axis.values[i] == axis.values[i - 1])
-        throw GridError(spec + ": " + key + " takes whole numbers, and " +
-                        std::string(parts[0]) + ":" + std::string(parts[1]) + " holds fewer than " +
-                        std::string(parts[2]) + " of them (" + number_text_of(axis.values[i]) +
+        throw GridError(spec + ": " + key + " takes whole numbers, and " + std::string(parts[0]) +
+                        ":" + std::string(parts[1]) + " holds fewer than " + std::string(parts[2]) +
+                        " of them (" + number_text_of(axis.values[i]) +
                         " twice); use a wider range or a smaller COUNT");
   }
   return axis;

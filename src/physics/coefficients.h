@@ -48,7 +48,7 @@ struct ChainCoefficients {
   std::vector<double> upper;      // spring j breaks at phi_j >= upper[j - 1] ...
   std::vector<double> lower;      // ... or phi_j <= lower[j - 1]
 
-  double mass_of(int bead) const { return per_bead ? mass[bead - 1] : 1.0; }          // 1..N
+  double mass_of(int bead) const { return per_bead ? mass[bead - 1] : 1.0; }                // 1..N
   double stiffness_of(int spring) const { return per_bead ? stiffness[spring - 1] : 1.0; }  // 1..N
   // Spring 1..N's bounds; also for a Uniform chain.
   double upper_of(int spring) const { return per_bead ? upper[spring - 1] : threshold; }

@@ -509,7 +509,8 @@ bool Integrator::settle_interval(double ta, double tb, bool end_is_breakpoint) {
       if (!outs[0].candidates.empty()) watch_(outs[0].candidates, ta, tb);
     } else {
       std::vector<detail::Candidate> all;
-      for (const auto& out : outs) all.insert(all.end(), out.candidates.begin(), out.candidates.end());
+      for (const auto& out : outs)
+        all.insert(all.end(), out.candidates.begin(), out.candidates.end());
       if (!all.empty()) watch_(all, ta, tb);
     }
     commit(tb);

@@ -48,7 +48,8 @@ class Ensemble {
       std::sort(keyed.begin(), keyed.end());
       auto& o = order_[static_cast<std::size_t>(j)];
       o.resize(static_cast<std::size_t>(members_));
-      for (int m = 0; m < members_; ++m) o[static_cast<std::size_t>(m)] = keyed[static_cast<std::size_t>(m)].second;
+      for (int m = 0; m < members_; ++m)
+        o[static_cast<std::size_t>(m)] = keyed[static_cast<std::size_t>(m)].second;
     }
     open_ = members_;
   }
@@ -61,7 +62,8 @@ class Ensemble {
     ChainParams p = shared;
     p.thresholds.assign(static_cast<std::size_t>(n_), std::numeric_limits<double>::infinity());
     for (int j = 1; j <= n_; ++j)
-      p.thresholds[static_cast<std::size_t>(j - 1)] = phi(order_[static_cast<std::size_t>(j - 1)][0], j);
+      p.thresholds[static_cast<std::size_t>(j - 1)] =
+          phi(order_[static_cast<std::size_t>(j - 1)][0], j);
     p.threshold = *std::min_element(p.thresholds.begin(), p.thresholds.end());
     p.normalize();
     return p;
@@ -121,7 +123,8 @@ class Ensemble {
   int open() const { return open_; }
   void fail_open() {
     for (int m = 0; m < members_; ++m)
-      if (!settled_[static_cast<std::size_t>(m)]) ends_[static_cast<std::size_t>(m)].kind = LaneEnd::Kind::Failed;
+      if (!settled_[static_cast<std::size_t>(m)])
+        ends_[static_cast<std::size_t>(m)].kind = LaneEnd::Kind::Failed;
   }
   std::vector<LaneEnd> take() { return std::move(ends_); }
 
@@ -142,7 +145,8 @@ class Ensemble {
 
 }  // namespace
 
-std::vector<LaneEnd> ensemble_first_breaks(const ThresholdEnsemble& e, const std::atomic<bool>* stop) {
+std::vector<LaneEnd> ensemble_first_breaks(const ThresholdEnsemble& e,
+                                           const std::atomic<bool>* stop) {
   assert(e.chain.beads >= 1 && !e.chain.pull_string);
   Ensemble ensemble(e);
   if (ensemble.open() == 0) return ensemble.take();
