@@ -38,18 +38,32 @@ class Ensemble {
         ends_(static_cast<std::size_t>(members_)),
         settled_(static_cast<std::size_t>(members_), false),
         seen_(static_cast<std::size_t>(members_), 0),
-        order_(static_cast<std::size_t>(n_)),
-        next_(static_cast<std::size_t>(n_), 0) {
+        buckets_(static_cast<std::size_t>(n_)) {
     assert(e.thresholds.size() == static_cast<std::size_t>(members_) * n_);
-    // Per spring, the members by phi_c,j (ties by member, so the order is the same everywhere).
-    std::vector<std::pair<double, int>> keyed(static_cast<std::size_t>(members_));
+    // Per spring, the members in buckets by phi_c,j (a counting sort: one linear pass, where
+    // sorting 30 x 10^4 keys cost 30 ms against a run's 0.4 ms). Bucket b holds lo + [b, b+1) /
+    // scale; the index is monotone in phi_c,j, so every member with phi_c,j <= reach lies in a
+    // bucket up to bucket_of(reach).
+    const auto buckets = static_cast<std::size_t>(members_);
     for (int j = 0; j < n_; ++j) {
-      for (int m = 0; m < members_; ++m) keyed[static_cast<std::size_t>(m)] = {phi(m, j + 1), m};
-      std::sort(keyed.begin(), keyed.end());
-      auto& o = order_[static_cast<std::size_t>(j)];
-      o.resize(static_cast<std::size_t>(members_));
+      Buckets& b = buckets_[static_cast<std::size_t>(j)];
+      double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+      for (int m = 0; m < members_; ++m) {
+        const double v = phi(m, j + 1);
+        lo = std::min(lo, v);
+        if (v < std::numeric_limits<double>::infinity()) hi = std::max(hi, v);
+      }
+      b.lo = lo;
+      b.scale = hi > lo ? static_cast<double>(buckets) / (hi - lo) : 0.0;
+      b.count = buckets;
+      b.start.assign(buckets + 1, 0);
+      for (int m = 0; m < members_; ++m) ++b.start[b.of(phi(m, j + 1)) + 1];
+      for (std::size_t k = 0; k < buckets; ++k) b.start[k + 1] += b.start[k];
+      b.members.resize(static_cast<std::size_t>(members_));
+      std::vector<int> fill(b.start.begin(), b.start.end() - 1);
       for (int m = 0; m < members_; ++m)
-        o[static_cast<std::size_t>(m)] = keyed[static_cast<std::size_t>(m)].second;
+        b.members[static_cast<std::size_t>(fill[b.of(phi(m, j + 1))]++)] = m;
+      b.loosest = lo;
     }
     open_ = members_;
   }
@@ -63,7 +77,7 @@ class Ensemble {
     p.thresholds.assign(static_cast<std::size_t>(n_), std::numeric_limits<double>::infinity());
     for (int j = 1; j <= n_; ++j)
       p.thresholds[static_cast<std::size_t>(j - 1)] =
-          phi(order_[static_cast<std::size_t>(j - 1)][0], j);
+          buckets_[static_cast<std::size_t>(j - 1)].loosest;
     p.threshold = *std::min_element(p.thresholds.begin(), p.thresholds.end());
     p.normalize();
     return p;
@@ -82,14 +96,20 @@ class Ensemble {
       const double s = slack * (detail::sabs(c.m0) + detail::sabs(c.m1));
       const double reach = std::max(std::abs(c.p0), std::abs(c.p1)) + s;
       const auto j = static_cast<std::size_t>(c.spring - 1);
-      const auto& o = order_[j];
-      std::size_t& k0 = next_[j];
-      while (k0 < o.size() && settled_[static_cast<std::size_t>(o[k0])]) ++k0;
-      for (std::size_t k = k0; k < o.size() && phi(o[k], c.spring) <= reach; ++k) {
-        const auto m = static_cast<std::size_t>(o[k]);
-        if (settled_[m] || seen_[m] == visit_) continue;
-        seen_[m] = visit_;
-        touched_.push_back(o[k]);
+      Buckets& b = buckets_[j];
+      const std::size_t last = b.of(reach);
+      for (std::size_t k = b.first; k <= last && k < b.count; ++k) {
+        bool all_settled = true;
+        for (int e = b.start[k]; e < b.start[k + 1]; ++e) {
+          const int member = b.members[static_cast<std::size_t>(e)];
+          const auto m = static_cast<std::size_t>(member);
+          if (settled_[m]) continue;
+          all_settled = false;
+          if (seen_[m] == visit_ || phi(member, c.spring) > reach) continue;
+          seen_[m] = visit_;
+          touched_.push_back(member);
+        }
+        if (all_settled && k == b.first) ++b.first;  // never scanned again
       }
     }
     for (const int m : touched_) settle(m, candidates, slack, ta, tb, step);
@@ -136,8 +156,20 @@ class Ensemble {
   std::vector<bool> settled_;
   std::vector<std::uint64_t> seen_;
   std::uint64_t visit_ = 0;
-  std::vector<std::vector<int>> order_;  // per spring, members by phi_c,j
-  std::vector<std::size_t> next_;        // per spring, the first member of order_ not settled
+  // One spring's members bucketed by phi_c,j (a counting sort).
+  struct Buckets {
+    double lo = 0.0, scale = 0.0, loosest = 0.0;  // loosest: the smallest phi_c,j
+    std::size_t count = 0, first = 0;             // first: no bucket before it holds an open member
+    std::vector<int> start;                       // bucket k: members[start[k] .. start[k+1])
+    std::vector<int> members;
+    std::size_t of(double v) const {
+      if (!(v < std::numeric_limits<double>::infinity())) return count - 1;
+      if (scale == 0.0) return 0;
+      const double x = (v - lo) * scale;
+      return x <= 0.0 ? 0 : std::min(count - 1, static_cast<std::size_t>(x));
+    }
+  };
+  std::vector<Buckets> buckets_;
   std::vector<int> touched_;
   std::vector<detail::Candidate> mine_;
   int open_ = 0;
