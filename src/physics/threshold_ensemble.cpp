@@ -45,11 +45,14 @@ class Ensemble {
     // scale; the index is monotone in phi_c,j, so every member with phi_c,j <= reach lies in a
     // bucket up to bucket_of(reach).
     const auto buckets = static_cast<std::size_t>(members_);
+    // Spring-major copy: the passes below read one spring's values in a row.
+    std::vector<double> column(static_cast<std::size_t>(members_));
     for (int j = 0; j < n_; ++j) {
       Buckets& b = buckets_[static_cast<std::size_t>(j)];
+      for (int m = 0; m < members_; ++m) column[static_cast<std::size_t>(m)] = phi(m, j + 1);
       double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
       for (int m = 0; m < members_; ++m) {
-        const double v = phi(m, j + 1);
+        const double v = column[static_cast<std::size_t>(m)];
         lo = std::min(lo, v);
         if (v < std::numeric_limits<double>::infinity()) hi = std::max(hi, v);
       }
@@ -57,12 +60,12 @@ class Ensemble {
       b.scale = hi > lo ? static_cast<double>(buckets) / (hi - lo) : 0.0;
       b.count = buckets;
       b.start.assign(buckets + 1, 0);
-      for (int m = 0; m < members_; ++m) ++b.start[b.of(phi(m, j + 1)) + 1];
+      for (int m = 0; m < members_; ++m) ++b.start[b.of(column[static_cast<std::size_t>(m)]) + 1];
       for (std::size_t k = 0; k < buckets; ++k) b.start[k + 1] += b.start[k];
       b.members.resize(static_cast<std::size_t>(members_));
       std::vector<int> fill(b.start.begin(), b.start.end() - 1);
       for (int m = 0; m < members_; ++m)
-        b.members[static_cast<std::size_t>(fill[b.of(phi(m, j + 1))]++)] = m;
+        b.members[static_cast<std::size_t>(fill[b.of(column[static_cast<std::size_t>(m)])]++)] = m;
       b.loosest = lo;
     }
     open_ = members_;
