@@ -32,12 +32,19 @@ Json breaks_json(const std::vector<BreakEvent>& breaks, const std::optional<Unit
   return out;
 }
 
+// Issue #23: the thresholds used, phi_c,j of springs 1..N, whenever they are not all equal
+// (ChainParams::normalize clears an array of equal values); the summary and the dry run's plan.
+void add_thresholds(Json& j, const ChainParams& chain) {
+  if (!chain.uniform_thresholds()) j["thresholds"] = chain.thresholds;
+}
+
 // The JSON summary on stdout (README "Commands"): the scene, the run and its books.
 Json summary_json(const RunOptions& o, const SceneDesc& scene, const RunOutcome& r) {
   Json j = {{"scene", scene.name}, {"title", scene.title}, {"solver", solver_name(o.solver)}};
   j["beads"] = scene.chain.beads;
   j["gamma"] = scene.chain.gamma;
   j["threshold"] = scene.chain.breakable() ? Json(scene.chain.threshold) : Json(nullptr);
+  add_thresholds(j, scene.chain);
   j["drive"] = drive_type_name(scene.drive.type);
   j["dt"] = scene.integrator.dt;
   if (r.simd) j["simd"] = simd_name(*r.simd);
@@ -116,6 +123,7 @@ Json run_plan_json(const RunOptions& o, const SceneDesc& scene, const RunNeeds& 
                    const MachineMemory& machine) {
   Json j = {{"scene", scene.name}, {"solver", solver_name(o.solver)}};
   j["beads"] = scene.chain.beads;
+  add_thresholds(j, scene.chain);
   j["steps"] = planned_steps(scene);
   j["csv"] = o.csv.empty() ? Json(nullptr) : Json(o.csv);
   j["csv_rows"] = n.csv_rows;

@@ -145,6 +145,7 @@ RunDescription describe_run(const SceneDesc& scene, const std::vector<Override>&
   d.gamma = scene.chain.gamma;
   d.dt = scene.integrator.dt;
   if (scene.chain.breakable()) d.threshold = scene.chain.threshold;
+  d.thresholds = scene.chain.thresholds;
   return d;
 }
 

@@ -65,6 +65,7 @@ struct RunDescription {
   int beads = 0;
   double gamma = 0.0, dt = 0.0;
   std::optional<double> threshold;  // none: unbreakable
+  std::vector<double> thresholds;   // phi_c,j of springs 1..N when not all equal (issue #23)
 };
 
 // The description of a run of `scene` (read from scene.path with `overrides`).

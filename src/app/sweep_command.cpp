@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <mutex>
@@ -33,9 +34,14 @@ namespace {
 
 // One CSV row: the point's values, then the spring that broke first and when (both empty
 // when nothing broke by t_end).
-void append_row(std::string& text, const std::vector<double>& values, const FirstBreak& b) {
-  for (double v : values) {
-    append_number(text, v);
+// Whole-number keys (chain.seed) as integers: 100000, not the shortest form 1e+05.
+void append_row(std::string& text, const Grid& grid, const std::vector<double>& values,
+                const FirstBreak& b) {
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    if (whole_number_key(grid.axes[k].key) && std::abs(values[k]) < 9.0e15)
+      text += std::to_string(static_cast<long long>(values[k]));
+    else
+      append_number(text, values[k]);
     text += ',';
   }
   if (b.broke) {
@@ -102,7 +108,8 @@ int sweep_command(const SweepOptions& o) {
     std::function<void(std::size_t)> on_progress;
     if (!o.quiet)
       on_progress = [&](std::size_t done) { progress.update(static_cast<double>(done)); };
-    results = sweep_first_breaks(scenes, o.solver, o.jobs, &g_interrupted, on_progress);
+    results = sweep_first_breaks(scenes, o.solver, o.jobs, &g_interrupted, on_progress,
+                                 threshold_groups(grid, range.first, range.size()));
   } catch (const std::runtime_error& e) {
     std::fprintf(stderr, "chainbreak: %s\n", e.what());
     return 1;
@@ -110,7 +117,7 @@ int sweep_command(const SweepOptions& o) {
   if (g_interrupted) return interrupted_status("no CSV written");
   std::string text = grid.csv_header() + "\n";
   for (std::size_t i = 0; i < results.size(); ++i)
-    append_row(text, grid.point(range.first + i), results[i]);
+    append_row(text, grid, grid.point(range.first + i), results[i]);
   out.write(text);
   out.commit();
   // The record last: its presence says the CSV is complete (resubmission and merge rely on it).

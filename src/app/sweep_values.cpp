@@ -1,11 +1,17 @@
 #include "app/sweep_values.h"
 
+#include <algorithm>
+#include <exception>
+#include <map>
+#include <mutex>
 #include <stdexcept>
+#include <thread>
 
 #include "app/run_rows.h"  // planned_steps
 #include "drive/drive.h"
 #include "figures/break_maps.h"
 #include "physics/lane_schedule.h"
+#include "physics/threshold_ensemble.h"
 
 namespace cb {
 
@@ -28,19 +34,129 @@ FirstBreak sweep_first_break(const SceneDesc& scene, Solver solver, const std::a
   }
 }
 
-std::vector<FirstBreak> sweep_first_breaks(const std::vector<SceneDesc>& scenes, Solver solver,
+std::vector<std::size_t> threshold_groups(const Grid& grid, std::size_t first, std::size_t count) {
+  std::map<std::vector<double>, std::size_t> ids;
+  std::vector<std::size_t> out;
+  out.reserve(count);
+  for (std::size_t i = first; i < first + count; ++i) {
+    std::vector<double> p = grid.point(i);
+    for (std::size_t k = 0; k < p.size(); ++k) {
+      const std::string& key = grid.axes[k].key;
+      if (key == "chain.seed" || key == "chain.threshold" || key == "chain.threshold_shape")
+        p[k] = 0.0;  // not part of the id
+    }
+    out.push_back(ids.emplace(std::move(p), ids.size()).first->second);
+  }
+  return out;
+}
+
+namespace {
+
+// The scenes (indices) that one ensemble can run: same chain but for thresholds, same drive
+// (the caller's groups: the same values of every other key), step and end.
+std::vector<std::vector<std::size_t>> ensembles_of(const std::vector<SceneDesc>& scenes,
+                                                   const std::vector<std::size_t>& groups) {
+  std::map<std::size_t, std::vector<std::size_t>> by_group;
+  for (std::size_t i = 0; i < scenes.size(); ++i)
+    if (ensemble_can_run(scenes[i].chain)) by_group[groups[i]].push_back(i);
+  std::vector<std::vector<std::size_t>> out;
+  for (auto& [id, members] : by_group) {
+    if (members.size() < 2) continue;
+    const SceneDesc& a = scenes[members.front()];
+    const bool shared = std::all_of(members.begin(), members.end(), [&](std::size_t i) {
+      const SceneDesc& b = scenes[i];
+      return ensemble_can_share(a.chain, b.chain) && a.integrator.dt == b.integrator.dt &&
+             planned_steps(a) == planned_steps(b);
+    });
+    if (shared) out.push_back(std::move(members));
+  }
+  return out;
+}
+
+// The first breaks of each ensemble's scenes into `results`, ensembles shared out on `jobs`
+// threads; a member whose shared state failed runs alone, for Integrator's message.
+void run_ensembles(const std::vector<SceneDesc>& scenes,
+                   const std::vector<std::vector<std::size_t>>& ensembles, int jobs,
+                   const std::atomic<bool>* stop, std::vector<FirstBreak>& results) {
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  auto worker = [&] {
+    for (std::size_t g; (g = next++) < ensembles.size();) {
+      try {
+        const auto& members = ensembles[g];
+        const SceneDesc& first = scenes[members.front()];
+        ThresholdEnsemble e;
+        e.chain = first.chain;
+        try {
+          e.forcing = make_forcing(first.drive);
+        } catch (const std::runtime_error& err) {
+          throw std::runtime_error(first.name + ": " + err.what());
+        }
+        e.dt = first.integrator.dt;
+        e.last_step = planned_steps(first);
+        const int n = first.chain.beads;
+        e.thresholds.reserve(members.size() * static_cast<std::size_t>(n));
+        for (std::size_t i : members)
+          for (int j = 1; j <= n; ++j) e.thresholds.push_back(scenes[i].chain.threshold_of(j));
+        const std::vector<LaneEnd> ends = ensemble_first_breaks(e, stop);
+        for (std::size_t k = 0; k < members.size(); ++k) {
+          const std::size_t i = members[k];
+          if (ends[k].kind == LaneEnd::Kind::Failed)
+            results[i] = sweep_first_break(scenes[i], Solver::Rk4, stop);
+          if (ends[k].kind == LaneEnd::Kind::Broke)
+            results[i] = {true, ends[k].first.spring, ends[k].first.tau};
+        }
+      } catch (...) {
+        std::lock_guard lock(failure_mutex);
+        if (!failure) failure = std::current_exception();
+        next = ensembles.size();
+      }
+    }
+  };
+  if (jobs <= 0) jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  std::vector<std::thread> pool;
+  for (std::size_t t = 1;
+       t < std::min<std::size_t>(static_cast<std::size_t>(jobs), ensembles.size()); ++t)
+    pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
+}
+
+}  // namespace
+
+std::vector<FirstBreak> sweep_first_breaks(const std::vector<SceneDesc>& all_scenes, Solver solver,
                                            int jobs, const std::atomic<bool>* stop,
-                                           const std::function<void(std::size_t)>& on_progress) {
-  std::vector<FirstBreak> results(scenes.size());
+                                           const std::function<void(std::size_t)>& on_progress,
+                                           const std::vector<std::size_t>& groups) {
+  std::vector<FirstBreak> all_results(all_scenes.size());
+  // Ensembles over thresholds first (one run each); the other values as before.
+  std::vector<bool> done(all_scenes.size(), false);
+  std::size_t done_count = 0;
+  if (solver == Solver::Rk4 && groups.size() == all_scenes.size()) {
+    const auto ensembles = ensembles_of(all_scenes, groups);
+    run_ensembles(all_scenes, ensembles, jobs, stop, all_results);
+    for (const auto& members : ensembles)
+      for (std::size_t i : members) done[i] = true;
+    for (bool d : done) done_count += d;
+    if (on_progress && done_count > 0) on_progress(done_count);
+  }
+  std::vector<std::size_t> rest;
+  for (std::size_t i = 0; i < all_scenes.size(); ++i)
+    if (!done[i]) rest.push_back(i);
+  if (rest.empty()) return all_results;
+  const auto& scenes = all_scenes;
+  std::vector<FirstBreak> results(rest.size());
   ScheduledRuns runs;
-  runs.count = scenes.size();
-  for (const SceneDesc& s : scenes) {
-    runs.beads.push_back(s.chain.beads);
-    runs.alone.push_back(s.chain.anharmonic() ? 1 : 0);
+  runs.count = rest.size();
+  for (std::size_t i : rest) {
+    runs.beads.push_back(scenes[i].chain.beads);
+    runs.alone.push_back(scenes[i].chain.anharmonic() ? 1 : 0);
   }
   runs.lanes = solver == Solver::Rk4;
-  runs.job = [&](std::size_t i) {
-    const SceneDesc& scene = scenes[i];
+  runs.job = [&](std::size_t r) {
+    const SceneDesc& scene = scenes[rest[r]];
     LaneJob job;
     job.params = scene.chain;
     try {
@@ -52,14 +168,20 @@ std::vector<FirstBreak> sweep_first_breaks(const std::vector<SceneDesc>& scenes,
     job.last_step = planned_steps(scene);
     return job;
   };
-  runs.lane_end = [&](std::size_t i, const LaneEnd& e) {
+  runs.lane_end = [&](std::size_t r, const LaneEnd& e) {
     // A value whose state stopped being finite runs again alone, for Integrator's message.
-    if (e.kind == LaneEnd::Kind::Failed) results[i] = sweep_first_break(scenes[i], solver, stop);
-    if (e.kind == LaneEnd::Kind::Broke) results[i] = {true, e.first.spring, e.first.tau};
+    const SceneDesc& scene = scenes[rest[r]];
+    if (e.kind == LaneEnd::Kind::Failed) results[r] = sweep_first_break(scene, solver, stop);
+    if (e.kind == LaneEnd::Kind::Broke) results[r] = {true, e.first.spring, e.first.tau};
   };
-  runs.single = [&](std::size_t i) { results[i] = sweep_first_break(scenes[i], solver, stop); };
-  run_scheduled(runs, jobs, stop, on_progress);
-  return results;
+  runs.single = [&](std::size_t r) {
+    results[r] = sweep_first_break(scenes[rest[r]], solver, stop);
+  };
+  std::function<void(std::size_t)> progress;
+  if (on_progress) progress = [&](std::size_t n) { on_progress(done_count + n); };
+  run_scheduled(runs, jobs, stop, progress);
+  for (std::size_t r = 0; r < rest.size(); ++r) all_results[rest[r]] = results[r];
+  return all_results;
 }
 
 }  // namespace cb

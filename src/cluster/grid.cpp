@@ -23,6 +23,12 @@ std::pair<std::string, std::string_view> split_key(const std::string& text,
   return {text.substr(0, eq), std::string_view(text).substr(eq + 1)};
 }
 
+std::string number_text_of(double v) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed);
+  return std::string(buf, r.ptr);
+}
+
 }  // namespace
 
 std::size_t Grid::size() const {
@@ -47,6 +53,11 @@ std::string Grid::csv_header() const {
   std::string h;
   for (const auto& a : axes) h += a.key + ",";
   return h + "spring,tau";
+}
+
+bool whole_number_key(const std::string& key) {
+  return key == "chain.seed" || key == "chain.beads" || key == "render.width" ||
+         key == "render.height";
 }
 
 GridAxis parse_vary(const std::string& text) {
@@ -89,6 +100,15 @@ GridAxis parse_vary(const std::string& text) {
                           : i + 1 == n ? hi
                           : log        ? std::exp(std::log(lo) + w * (std::log(hi) - std::log(lo)))
                                        : lo + w * (hi - lo));
+  }
+  if (whole_number_key(key)) {
+    for (double& v : axis.values) v = std::round(v);
+    for (std::size_t i = 1; i < axis.values.size(); ++i)
+      if (axis.values[i] == axis.values[i - 1])
+        throw GridError(spec + ": " + key + " takes whole numbers, and " + std::string(parts[0]) +
+                        ":" + std::string(parts[1]) + " holds fewer than " + std::string(parts[2]) +
+                        " of them (" + number_text_of(axis.values[i]) +
+                        " twice); use a wider range or a smaller COUNT");
   }
   return axis;
 }

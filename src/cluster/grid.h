@@ -33,6 +33,11 @@ struct Grid {
   std::string csv_header() const;
 };
 
+// Keys whose values are whole numbers (chain.seed, chain.beads, render.width, render.height):
+// parse_vary rounds their spaced values to the nearest integer (1 + w (10000 - 1) is not always
+// a whole number), and the sweep's CSV writes them as integers (issue #23: seeds).
+bool whole_number_key(const std::string& key);
+
 // KEY=LO:HI:COUNT[:log]: COUNT values from LO to HI, evenly spaced (geometrically with :log).
 GridAxis parse_vary(const std::string& text);
 // KEY=V1,V2,...: an explicit list, in the order given.

@@ -37,7 +37,7 @@ ChainCoefficients chain_coefficients(const ChainParams& params, bool per_bead_al
     c.stiffness[j - 1] = p.stiffness_of(j);
     const double phi_c = p.threshold_of(j);
     c.upper[j - 1] = phi_c - eq[j - 1];
-    c.lower[j - 1] = c.stretch_only ? -kInf : -phi_c - eq[j - 1];
+    c.lower[j - 1] = lower_bound_of(phi_c, c.stretch_only) - eq[j - 1];
     if (p.hanging()) c.tension[j - 1] = c.stiffness[j - 1] * eq[j - 1];
   }
   return c;

@@ -27,6 +27,12 @@ namespace cb {
 // a partial last block, and K_{N+1} one past it, without masks.
 inline constexpr int kCoefficientPad = 16;
 
+// The lower bound of a spring of threshold phi_c: -phi_c (|phi| >= phi_c breaks), or -inf
+// when only stretch breaks it; its upper bound is phi_c. The one place the rule is written.
+inline double lower_bound_of(double phi_c, bool stretch_only) {
+  return stretch_only ? -std::numeric_limits<double>::infinity() : -phi_c;
+}
+
 struct ChainCoefficients {
   int beads = 0;
   bool per_bead = false;  // false: the Uniform policy (no arrays)
@@ -61,7 +67,7 @@ struct ChainCoefficients {
   double upper_of(int spring) const { return per_bead ? upper[spring - 1] : threshold; }
   double lower_of(int spring) const {
     if (per_bead) return lower[spring - 1];
-    return stretch_only ? -std::numeric_limits<double>::infinity() : -threshold;
+    return lower_bound_of(threshold, stretch_only);
   }
   bool hanging() const { return !tension.empty(); }
   // The constant load on bead i (0-based) from the broken springs among `broken` (sorted, 1..N)

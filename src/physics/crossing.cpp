@@ -70,17 +70,13 @@ double hermite_first_crossing(double p0, double p1, double m0, double m1, double
 
 int earliest_crossing(const std::vector<Candidate>& candidates, const ChainCoefficients& coef,
                       double ta, double tb, double* first) {
-  *first = tb + 1.0;
-  int spring = -1;
-  for (const Candidate& c : candidates) {
-    const double theta = hermite_first_crossing(c.p0, c.p1, c.m0, c.m1, tb - ta,
-                                                coef.upper_of(c.spring), coef.lower_of(c.spring));
-    if (theta >= 0.0 && (ta + theta < *first || (ta + theta == *first && c.spring < spring))) {
-      *first = ta + theta;
-      spring = c.spring;
-    }
-  }
-  return spring;
+  return earliest_crossing_within(
+      candidates,
+      [&](int spring, double* upper, double* lower) {
+        *upper = coef.upper_of(spring);
+        *lower = coef.lower_of(spring);
+      },
+      ta, tb, first);
 }
 
 double first_time_at_least(const std::function<double(double)>& f, double f_end, double ta,

@@ -41,6 +41,25 @@ double hermite_first_crossing(double p0, double p1, double m0, double m1, double
 int earliest_crossing(const std::vector<Candidate>& candidates, const ChainCoefficients& coef,
                       double ta, double tb, double* first);
 
+// The same search with each spring's bounds from bounds(spring, &upper, &lower): the one search
+// for Integrator, the lanes and ensembles over thresholds (threshold_ensemble.h).
+template <class Bounds>
+int earliest_crossing_within(const std::vector<Candidate>& candidates, const Bounds& bounds,
+                             double ta, double tb, double* first) {
+  *first = tb + 1.0;
+  int spring = -1;
+  for (const Candidate& c : candidates) {
+    double upper = 0.0, lower = 0.0;
+    bounds(c.spring, &upper, &lower);
+    const double theta = hermite_first_crossing(c.p0, c.p1, c.m0, c.m1, tb - ta, upper, lower);
+    if (theta >= 0.0 && (ta + theta < *first || (ta + theta == *first && c.spring < spring))) {
+      *first = ta + theta;
+      spring = c.spring;
+    }
+  }
+  return spring;
+}
+
 // First t in [ta, tb] with f(t) >= c, by sampling and bisection; negative when none.
 // f is evaluated at tb only through f_end (its left limit there).
 double first_time_at_least(const std::function<double(double)>& f, double f_end, double ta,

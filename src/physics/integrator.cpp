@@ -518,6 +518,21 @@ bool Integrator::advance_interval(double ta, double tb, bool end_is_breakpoint) 
 // The rest of advance_interval once the outputs hold a finite rk4(ta, tb, end_is_breakpoint):
 // commit it, or integrate to the earliest crossing, break that spring and redo the rest.
 bool Integrator::settle_interval(double ta, double tb, bool end_is_breakpoint) {
+  if (watch_) {
+    // Watched, not broken (watch_crossings()): each worker's candidates in
+    // worker order, as one list.
+    const auto& outs = impl_->outputs;
+    if (outs.size() == 1) {
+      if (!outs[0].candidates.empty()) watch_(outs[0].candidates, ta, tb);
+    } else {
+      std::vector<detail::Candidate> all;
+      for (const auto& out : outs)
+        all.insert(all.end(), out.candidates.begin(), out.candidates.end());
+      if (!all.empty()) watch_(all, ta, tb);
+    }
+    commit(tb);
+    return true;
+  }
   for (int guard = 0;; ++guard) {
     // The earliest threshold crossing inside (ta, tb], if any: each worker's candidates in
     // worker order (ties to the lower spring, so the order does not matter).

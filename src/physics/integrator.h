@@ -19,6 +19,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -26,6 +27,7 @@
 
 #include "physics/chain.h"
 #include "physics/coefficients.h"
+#include "physics/crossing.h"
 #include "physics/forcing.h"
 #include "physics/simd.h"
 
@@ -118,6 +120,14 @@ class Integrator {
   Cursor cursor() const;
   void restore(const ChainState& state, const Cursor& cursor);
 
+  // Ensembles over thresholds (physics/threshold_ensemble.h): once set, no spring breaks; each
+  // interval [ta, tb] whose springs may reach their bounds (the chain's own: the loosest of the
+  // ensemble) hands its candidates here, then is committed whole. Before an ensemble member's
+  // first break its trajectory is this run's, bit for bit. Not for a chain with a pull string.
+  using CrossingWatch =
+      std::function<void(const std::vector<detail::Candidate>&, double ta, double tb)>;
+  void watch_crossings(CrossingWatch watch) { watch_ = std::move(watch); }
+
  private:
   struct Impl;
   ChainParams params_;
@@ -127,6 +137,7 @@ class Integrator {
   ChainState state_;
   std::string error_;
   std::unique_ptr<Impl> impl_;
+  CrossingWatch watch_;  // watch_crossings(); empty: springs break
 
   // A hanging chain: psi_eq, phi_eq (index j - 1), and the last state() reported (psi, not u)
   // with the step, tau and break count it was made at.

@@ -52,6 +52,7 @@ struct Result {
   int beads = 0;
   double gamma = 0, dt = 0;
   std::optional<double> threshold;
+  std::optional<std::vector<double>> thresholds;  // phi_c,j when not all equal (issue #23)
   std::int64_t steps = 0;
   double tau_end = 0;
   py::object tau, f, energy, kinetic, potential, phi, psi = py::none(), psi_dot = py::none();
@@ -78,6 +79,7 @@ Result make_result(RunDescription d, RunOutcome outcome, std::vector<double> tau
   r.dt = d.dt;
   r.every = d.every;
   r.threshold = d.threshold;
+  if (!d.thresholds.empty()) r.thresholds = d.thresholds;
   r.steps = outcome.steps;
   r.tau_end = outcome.tau_end;
   const auto rows = static_cast<py::ssize_t>(tau.size());
@@ -214,6 +216,9 @@ void bind_run(py::module_& m) {
       .def_readonly("beads", &Result::beads)
       .def_readonly("gamma", &Result::gamma)
       .def_readonly("threshold", &Result::threshold)
+      .def_readonly("thresholds", &Result::thresholds,
+                    "[phi_c,1, ..., phi_c,N] when the springs' thresholds are not all equal "
+                    "(drawn by chain.seed, or chain.thresholds), else None (all `threshold`)")
       .def_readonly("dt", &Result::dt)
       .def_readonly("every", &Result::every)
       .def_readonly("steps", &Result::steps)

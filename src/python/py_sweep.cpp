@@ -48,8 +48,10 @@ py::dict sweep(const Scene& source, const py::dict& vary, const std::string& sol
     scenes.push_back(variations.with(settings));
     check_sweep_scene(scenes.back(), solver);
   }
-  const std::vector<FirstBreak> breaks =
-      interruptible([&] { return sweep_first_breaks(scenes, solver, jobs, &g_interrupted, {}); });
+  const std::vector<FirstBreak> breaks = interruptible([&] {
+    return sweep_first_breaks(scenes, solver, jobs, &g_interrupted, {},
+                              threshold_groups(grid, 0, grid.size()));
+  });
   if (g_interrupted) {  // stopped from elsewhere (another call saw Ctrl-C)
     PyErr_SetNone(PyExc_KeyboardInterrupt);
     throw py::error_already_set();

@@ -3,12 +3,14 @@
 // Why: `sweep` varies one key over hundreds of values; reading and parsing the scene file
 // again for each was the only way to have each value checked. Now the value is converted to
 // Eq. (dimless) form here and checked by validate(), the same rules as the file's.
+#include <algorithm>
 #include <climits>
 #include <cmath>
 
 #include "scene/scene.h"
 #include "scene/scene_reader.h"
 #include "scene/scene_units.h"
+#include "scene/threshold_draw.h"
 
 namespace cb {
 
@@ -74,7 +76,22 @@ bool assign_number(SceneDesc& next, const std::string& key, double value,
        !(chain.mass.empty() && chain.stiffness.empty() && chain.thresholds.empty())) ||
       (key == "chain.threshold" && !chain.thresholds.empty()))
     return false;
-  if (key == "chain.beads") {
+  if (key == "chain.seed") {
+    // A new seed of drawn thresholds (issue #23): drawn here as the reader draws them, so a
+    // sweep over 10^4 seeds does not parse the file 10^4 times. Without threshold_dist, or for a
+    // value the reader refuses, the text is read again and the reader says why.
+    if (!next.threshold_draw || value < 0.0 || value != std::floor(value) || value > 9.0e15)
+      return false;
+    ThresholdDraw& draw = *next.threshold_draw;
+    draw.seed = static_cast<std::int64_t>(value);
+    const auto dist = draw.dist == "normal" ? scene_detail::ThresholdDist::Normal
+                                            : scene_detail::ThresholdDist::Weibull;
+    ChainParams& p = next.chain;
+    p.thresholds = scene_detail::draw_thresholds(dist, draw.scale, draw.shape,
+                                                 static_cast<std::uint64_t>(draw.seed), p.beads);
+    p.threshold = *std::min_element(p.thresholds.begin(), p.thresholds.end());
+    p.normalize();
+  } else if (key == "chain.beads") {
     next.chain.beads = whole(key, value, origin);
   } else if (key == "render.width") {
     next.render.width = whole(key, value, origin);

@@ -1,0 +1,49 @@
+// First breaks of an ensemble of chains that differ only in their thresholds (issue #23: flawed
+// chains by seed), from one RK4 run.
+//
+// Design note: before its first break a chain's trajectory does not depend on its thresholds;
+// they only decide when a spring is tested (the crossing bound) and whether it crosses (the
+// Hermite rule). So one run with each spring's bounds set to the loosest of the ensemble (the
+// smallest phi_c,j) collects every step's candidates for every member, and never breaks
+// (Integrator::watch_crossings). At each such step the members whose phi_c,j lies below a
+// candidate's bound are tested as `run` would test them: the same bound (stencil.inc), the same
+// earliest-crossing search (crossing.h), their own bounds. Each member's spring, tau and step are
+// then Integrator's on that member alone, bit for bit (tests/test_threshold_ensemble.cpp). The
+// exact solver shares one run across thresholds the same way (exact/first_break.cpp).
+// Per spring the members are kept sorted by phi_c,j, so a step touches only the members about
+// to break: 10^4 members cost little more than the run itself (tests/bench/README.md).
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <vector>
+
+#include "physics/chain.h"
+#include "physics/forcing.h"
+#include "physics/lanes.h"  // LaneEnd
+
+namespace cb {
+
+struct ThresholdEnsemble {
+  ChainParams chain;  // what every member shares; its thresholds are ignored
+  Forcing forcing;
+  double dt = 0.01;
+  std::int64_t last_step = 0;  // stop after this step (t_end on the step grid)
+  // phi_c,j of member m, spring j (1..N), at index m N + j - 1 (ChainParams::threshold_of).
+  std::vector<double> thresholds;
+};
+
+// Whether `a` and `b` differ at most in their thresholds, and an ensemble can run them: no pull
+// string (its threshold is the chain's scale, which the members do not share), every threshold
+// above zero.
+bool ensemble_can_share(const ChainParams& a, const ChainParams& b);
+bool ensemble_can_run(const ChainParams& member);
+
+// Each member's first break (LaneEnd::Broke), none by last_step (Reached), or Failed when the
+// shared state stopped being finite before it broke (rerun it alone for Integrator's message).
+// When *stop becomes true the members not yet settled are returned as Reached: the caller checks
+// `stop`.
+std::vector<LaneEnd> ensemble_first_breaks(const ThresholdEnsemble& ensemble,
+                                           const std::atomic<bool>* stop = nullptr);
+
+}  // namespace cb

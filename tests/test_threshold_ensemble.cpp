@@ -1,0 +1,189 @@
+// Ensembles over thresholds (physics/threshold_ensemble.h, issue #23): one RK4 run gives every
+// member's first break (spring, tau to the last bit, step) exactly as Integrator gives it for
+// that member alone, which is what `run` prints; and a sweep over chain.seed goes through it.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstring>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "app/sweep_values.h"
+#include "drive/drive.h"
+#include "physics/integrator.h"
+#include "physics/run_loop.h"
+#include "physics/threshold_ensemble.h"
+#include "scene/threshold_draw.h"
+#include "test_support.h"
+
+namespace {
+
+namespace sd = cb::scene_detail;
+
+// Integrator alone on `chain`: the end of run_until(at_first_break), as `run` and sweep see it.
+cb::LaneEnd alone(const cb::ChainParams& chain, const cb::DriveDesc& drive, double dt,
+                  std::int64_t last_step) {
+  cb::Integrator sim(chain, cb::make_forcing(drive), {dt, 1});
+  const cb::StopRule rule{last_step, std::nullopt, true, nullptr};
+  cb::LaneEnd end;
+  if (cb::run_until(sim, rule) == cb::RunEnd::Failed) {
+    end.kind = cb::LaneEnd::Kind::Failed;
+  } else if (!sim.state().breaks.empty()) {
+    end.kind = cb::LaneEnd::Kind::Broke;
+    end.first = sim.state().breaks.front();
+  }
+  return end;
+}
+
+// Every member against Integrator alone: the same kind, spring, tau (==, not approximately)
+// and step. Returns how many broke.
+int check_members(const cb::ChainParams& shared, const std::vector<cb::ChainParams>& members,
+                  const cb::DriveDesc& drive, double dt, std::int64_t last_step) {
+  cb::ThresholdEnsemble e;
+  e.chain = shared;
+  e.forcing = cb::make_forcing(drive);
+  e.dt = dt;
+  e.last_step = last_step;
+  for (const auto& m : members)
+    for (int j = 1; j <= m.beads; ++j) e.thresholds.push_back(m.threshold_of(j));
+  const std::vector<cb::LaneEnd> ends = cb::ensemble_first_breaks(e);
+  REQUIRE(ends.size() == members.size());
+  int broke = 0;
+  for (std::size_t i = 0; i < members.size(); ++i) {
+    INFO("member " << i);
+    const cb::LaneEnd a = alone(members[i], drive, dt, last_step);
+    REQUIRE(ends[i].kind == a.kind);
+    if (a.kind != cb::LaneEnd::Kind::Broke) continue;
+    ++broke;
+    CHECK(ends[i].first.spring == a.first.spring);
+    CHECK(ends[i].first.tau == a.first.tau);
+    CHECK(ends[i].first.step == a.first.step);
+  }
+  return broke;
+}
+
+cb::ChainParams flawed(int seed, double shape, cb::BreakMode mode = cb::BreakMode::Abs) {
+  cb::ChainParams p;
+  p.beads = 30;
+  p.break_on = mode;
+  p.thresholds = sd::draw_thresholds(sd::ThresholdDist::Weibull, 1.0, shape,
+                                     static_cast<std::uint64_t>(seed), p.beads);
+  p.threshold = *std::min_element(p.thresholds.begin(), p.thresholds.end());
+  p.normalize();
+  return p;
+}
+
+}  // namespace
+
+TEST_CASE("an ensemble of Weibull seeds gives each seed's first break as Integrator alone",
+          "[ensemble][flaws]") {
+  // Seeds 1..60 of a 30-bead chain, Weibull modulus 4, scale 1: a slow pull (weakest links
+  // inside the chain), a middle one and a jerk (the pulled end), with and without friction and
+  // with stretch-only breaking.
+  for (const double beta : {0.01, 0.1, 1.0})
+    for (const double gamma : {0.0, 0.05})
+      for (const auto mode : {cb::BreakMode::Abs, cb::BreakMode::Stretch}) {
+        INFO("beta " << beta << " gamma " << gamma << " stretch "
+                     << (mode == cb::BreakMode::Stretch));
+        std::vector<cb::ChainParams> members;
+        for (int seed = 1; seed <= 60; ++seed) {
+          members.push_back(flawed(seed, 4.0, mode));
+          members.back().gamma = gamma;
+        }
+        cb::DriveDesc drive;
+        drive.type = cb::DriveType::Ramp;
+        drive.beta = beta;
+        const auto last = std::llround((4.0 / beta) / 0.01);
+        CHECK(check_members(members.front(), members, drive, 0.01, last) == 60);
+      }
+}
+
+TEST_CASE("an ensemble over a uniform chain's threshold gives Integrator's breaks", "[ensemble]") {
+  // The paper's chain (no arrays: the Uniform coefficient policy for each member) swept over
+  // phi_c; the ensemble runs the loosest as PerBead, which gives the Uniform bits.
+  std::vector<cb::ChainParams> members;
+  for (int k = 0; k < 25; ++k) {
+    cb::ChainParams p;
+    p.beads = 30;
+    p.threshold = 0.5 + 0.11 * k;
+    members.push_back(p);
+  }
+  cb::DriveDesc drive;
+  drive.type = cb::DriveType::Ramp;
+  drive.beta = 0.03;
+  // t_end 60: the largest thresholds do not break by then (Reached must agree too).
+  const int broke = check_members(members.front(), members, drive, 0.01, 6000);
+  CHECK(broke > 5);
+  CHECK(broke < 25);
+}
+
+TEST_CASE("a sweep over chain.seed runs as an ensemble and equals the values one by one",
+          "[ensemble][flaws]") {
+  // threshold_groups: a beta x seed grid makes one group per beta.
+  cb::Grid grid;
+  cb::add_axis(grid, {"drive.beta", {0.02, 0.5}, "--values drive.beta=0.02,0.5"});
+  cb::add_axis(grid, {"chain.seed", {1, 2, 3}, "--values chain.seed=1,2,3"});
+  CHECK(cb::threshold_groups(grid, 0, grid.size()) == std::vector<std::size_t>{0, 0, 0, 1, 1, 1});
+  CHECK(cb::threshold_groups(grid, 2, 3) == std::vector<std::size_t>{0, 1, 1});
+}
+
+TEST_CASE("a quasi-static slow pull breaks the weakest spring at tau ~ phi_c,min / beta",
+          "[ensemble][flaws]") {
+  // beta = 1e-4, gamma = 0.05: the chain follows the pull almost statically (friction's drag
+  // 2 gamma beta N ~ 3e-4 of the force), so every spring carries f = beta tau and the weakest,
+  // drawn by seed 1, breaks when f reaches it. Tolerance 0.5 % of tau: the ringing and the drag.
+  cb::ChainParams p = flawed(1, 6.0);
+  p.gamma = 0.05;
+  const auto weakest = std::min_element(p.thresholds.begin(), p.thresholds.end());
+  const int spring = static_cast<int>(weakest - p.thresholds.begin()) + 1;
+  cb::DriveDesc drive;
+  drive.type = cb::DriveType::Ramp;
+  drive.beta = 1e-4;
+  const double expected = *weakest / drive.beta;
+  const cb::LaneEnd end = alone(p, drive, 0.01, std::llround(1.5 * expected / 0.01));
+  REQUIRE(end.kind == cb::LaneEnd::Kind::Broke);
+  CHECK(end.first.spring == spring);
+  CHECK(end.first.tau == Approx(expected).epsilon(0.005));
+}
+
+TEST_CASE("sweep over chain.seed: integers in the CSV, each row `run` on that seed, bit for bit",
+          "[ensemble][flaws][cli]") {
+  // A beta x seed grid of scenes/flawed_chain.toml (two ensembles of five seeds); each row
+  // against `chainbreak run --set chain.seed=S --set drive.beta=B` (its shortest round-trip
+  // tau); the run's JSON lists the drawn thresholds, different for different seeds.
+  const cb::test::TempDir dir;
+  const std::string scene = std::string(CHAINBREAK_SCENES) + "/flawed_chain.toml";
+  const auto sweep = cb::test::run_chainbreak("sweep " + scene +
+                                              " --values drive.beta=0.02,0.5 --vary "
+                                              "chain.seed=99996:100000:5 --quiet --csv " +
+                                              dir.file("s.csv"));
+  INFO(sweep.err);
+  REQUIRE(sweep.status == 0);
+  std::istringstream csv(cb::test::slurp(dir.file("s.csv")));
+  std::string line;
+  std::getline(csv, line);
+  REQUIRE(line == "drive.beta,chain.seed,spring,tau");
+  int rows = 0;
+  std::vector<double> previous;
+  while (std::getline(csv, line)) {
+    std::vector<std::string> cell;
+    std::istringstream fields(line);
+    for (std::string c; std::getline(fields, c, ',');) cell.push_back(c);
+    REQUIRE(cell.size() == 4);
+    INFO(line);
+    CHECK(cell[1] == std::to_string(99996 + rows % 5));  // an integer, not 1e+05
+    const auto run = cb::test::run_chainbreak("run " + scene + " --set chain.seed=" + cell[1] +
+                                              " --set drive.beta=" + cell[0]);
+    REQUIRE(run.status == 0);
+    const auto summary = nlohmann::json::parse(run.out);
+    const auto& breaks = summary["breaks"];
+    REQUIRE(!breaks.empty());
+    CHECK(std::to_string(breaks[0]["spring"].get<int>()) == cell[2]);
+    CHECK(breaks[0]["tau"].get<double>() == std::stod(cell[3]));
+    const auto thresholds = summary["thresholds"].get<std::vector<double>>();
+    CHECK(thresholds.size() == 30);
+    CHECK(thresholds != previous);
+    previous = thresholds;
+    ++rows;
+  }
+  CHECK(rows == 10);
+}
