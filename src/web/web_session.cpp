@@ -1,0 +1,102 @@
+#include "web/web_session.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "physics/run_loop.h"
+
+namespace cb {
+
+namespace {
+
+// `run`'s step count (app/run_rows.cpp): t_end on the scene's step grid.
+std::int64_t planned_steps(const SceneDesc& s) {
+  return std::llround(s.integrator.t_end / s.integrator.dt);
+}
+
+// The layout's pre-pass runs the physics to the first break (app/frames.h, measure_run). A
+// long chain's whole run would hold the page for seconds: past this many bead-steps the
+// pre-pass stops early and the chain may leave the frame late in the run.
+constexpr double kPrePassBeadSteps = 3e8;
+
+}  // namespace
+
+void WebSession::load(const std::string& text, const std::string& path,
+                      std::vector<Override> overrides) {
+  replace(parse_scene(text, path, overrides), text, path, std::move(overrides));
+}
+
+void WebSession::set(const std::string& key, const std::string& value) {
+  std::vector<Override> o = overrides_;
+  const auto same =
+      std::find_if(o.begin(), o.end(), [&](const Override& x) { return x.key == key; });
+  if (same != o.end())
+    same->value = value;
+  else
+    o.push_back({key, value});
+  // parse_override checks the key's form as the command line does ("--set" without '=').
+  parse_override(key + "=" + value);
+  replace(parse_scene(text_, path_, o), text_, path_, std::move(o));
+}
+
+void WebSession::replace(SceneDesc scene, std::string text, std::string path,
+                         std::vector<Override> o) {
+  // Everything that can throw happens before anything is replaced.
+  const double dt = scene.integrator.dt;
+  double tau_stop = scene.integrator.t_end;
+  const double bead_steps = static_cast<double>(scene.chain.beads) * (tau_stop / dt);
+  if (bead_steps > kPrePassBeadSteps) tau_stop *= kPrePassBeadSteps / bead_steps;
+  RunExtent extent = measure_run(scene, tau_stop, dt);
+  auto sim = std::make_unique<Integrator>(scene.chain, make_forcing(scene.drive),
+                                          IntegratorOptions{dt, 1});
+  scene_ = std::move(scene);
+  text_ = std::move(text);
+  path_ = std::move(path);
+  overrides_ = std::move(o);
+  extent_ = std::move(extent);
+  sim_ = std::move(sim);
+  error_.clear();
+}
+
+void WebSession::restart() {
+  sim_ = std::make_unique<Integrator>(scene_.chain, make_forcing(scene_.drive),
+                                      IntegratorOptions{scene_.integrator.dt, 1});
+  error_.clear();
+}
+
+std::int64_t WebSession::last_step() const {
+  std::int64_t last = planned_steps(scene_);
+  const ChainState& s = sim_->state();
+  if (!s.breaks.empty() && scene_.integrator.after_break)
+    last = std::min(last, after_break_step(s.breaks.front().tau, *scene_.integrator.after_break,
+                                           scene_.integrator.dt));
+  return last;
+}
+
+std::int64_t WebSession::step_at(double tau) const {
+  return static_cast<std::int64_t>(std::ceil(tau / scene_.integrator.dt - 1e-9));
+}
+
+bool WebSession::advance_to(std::int64_t step) {
+  if (!error_.empty()) return false;
+  // `run`'s own stop rule (t_end, after_break past the first break), capped at `step`.
+  const StopRule stop{std::min(step, planned_steps(scene_)), scene_.integrator.after_break, false,
+                      nullptr};
+  if (run_until(*sim_, stop) == RunEnd::Failed) {
+    error_ = sim_->error();
+    return false;
+  }
+  return true;
+}
+
+RenderSnapshot WebSession::snapshot(int width, int height, const std::string& theme,
+                                    const std::string& view) const {
+  FrameOptions o;
+  o.size = std::to_string(width) + "x" + std::to_string(height);
+  o.theme = theme;
+  o.view = view;
+  const SnapshotStyle style = snapshot_style(scene_, frame_settings(scene_, o), extent_);
+  return build_snapshot(sim_->state(), scene_.chain, sim_->force_now(), style);
+}
+
+}  // namespace cb
