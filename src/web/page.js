@@ -351,7 +351,8 @@
 
   // ---- the test API (README, "In the browser") ----
   function state() {
-    return { tau: page.tau(), playing, beads: page.scene().beads, breaks: page.breaks() };
+    return { tau: page.tau(), playing, beads: page.scene().beads, breaks: page.breaks(),
+             energy: page.energy() };
   }
   function check(error) {
     if (error) throw new Error(error);

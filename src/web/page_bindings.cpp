@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "gl/gl_loader.h"
+#include "physics/energy.h"
 #include "render/renderer.h"
 #include "scene/scene_writer.h"
 #include "web/web_session.h"
@@ -115,6 +116,19 @@ class Page {
     return list;
   }
 
+  // The energy `run`'s summary reports (units K l^2): the state's whole history in five numbers.
+  emscripten::val energy() const {
+    const ChainState& st = session_.sim().state();
+    const EnergyParts parts = cb::energy(st);
+    emscripten::val o = emscripten::val::object();
+    o.set("kinetic", parts.kinetic);
+    o.set("potential", parts.potential);
+    o.set("work", st.work);
+    o.set("dissipated", st.dissipated);
+    o.set("break_loss", st.break_loss);
+    return o;
+  }
+
   // The scene's values the controls show (dimensionless, as the integrator sees them).
   emscripten::val scene() const {
     const SceneDesc& s = session_.scene();
@@ -208,6 +222,7 @@ EMSCRIPTEN_BINDINGS(chainbreak) {
       .function("atEnd", &Page::at_end)
       .function("error", &Page::error)
       .function("breaks", &Page::breaks)
+      .function("energy", &Page::energy)
       .function("scene", &Page::scene)
       .function("toml", &Page::toml)
       .function("draw", &Page::draw)

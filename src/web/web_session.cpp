@@ -74,7 +74,11 @@ std::int64_t WebSession::last_step() const {
 }
 
 std::int64_t WebSession::step_at(double tau) const {
-  return static_cast<std::int64_t>(std::ceil(tau / scene_.integrator.dt - 1e-9));
+  // Clamped before the conversion: a tau past the run (or not a number) means its end.
+  const double step = std::ceil(tau / scene_.integrator.dt - 1e-9);
+  const auto last = planned_steps(scene_);
+  if (!(step < static_cast<double>(last))) return last;
+  return step > 0 ? static_cast<std::int64_t>(step) : 0;
 }
 
 bool WebSession::advance_to(std::int64_t step) {
