@@ -131,7 +131,8 @@ groups.keyboard = async (browser) => {
   const reached = new Set();
   for (let i = 0; i < controls.length * 3 && reached.size < controls.length; ++i) {
     await page.keyboard.press("Tab");
-    reached.add(await page.evaluate(() => document.activeElement.id));
+    const id = await page.evaluate(() => document.activeElement.id);
+    if (controls.includes(id)) reached.add(id);
   }
   const missing = controls.filter((id) => !reached.has(id));
   assert.deepEqual(missing, [], "Tab never reached " + missing.join(", "));
@@ -230,7 +231,8 @@ groups.fuzz = async (browser) => {
 
 // The page's frame at tau against `chainbreak snapshot` of the same scene, size and theme.
 // SwiftShader (the page) and llvmpipe (the CLI) rasterise edges differently: the tolerance is
-// on the fraction of pixels off by more than 32 in a channel, and on the mean difference.
+// on the fraction of pixels off by more than 32 in a channel (under 0.1 %; measured 0.0004 %)
+// and on the mean of the largest channel difference (under 0.1 of 255; measured 0.012).
 groups.pixels = async (browser) => {
   const tau = 155;  // past the first break (150.86), so both layouts saw the same extremes
   for (const theme of ["dark", "light"]) {
@@ -262,11 +264,11 @@ groups.pixels = async (browser) => {
       const n = cli.length / 4;
       return { width: bitmap.width, height: bitmap.height, off: off / n, mean: sum / n, max };
     }, pngBase64);
-    console.log(`  ${theme}: ${(result.off * 100).toFixed(3)} % of pixels off by > 32, mean ${result.mean.toFixed(3)}, max ${result.max}`);
+    console.log(`  ${theme}: ${(result.off * 100).toFixed(4)} % of pixels off by > 32, mean ${result.mean.toFixed(3)}, max ${result.max}`);
     assert.equal(result.width, 1280);
     assert.equal(result.height, 720);
-    assert.ok(result.off < 0.005, `${theme}: ${(result.off * 100).toFixed(3)} % of pixels differ by > 32`);
-    assert.ok(result.mean < 1.0, `${theme}: mean difference ${result.mean}`);
+    assert.ok(result.off < 0.001, `${theme}: ${(result.off * 100).toFixed(3)} % of pixels differ by > 32`);
+    assert.ok(result.mean < 0.1, `${theme}: mean difference ${result.mean}`);
     assert.deepEqual(problems, []);
   }
 };
