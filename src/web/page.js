@@ -204,7 +204,8 @@
   }
 
   function draw() {
-    const error = page.draw(canvas.width, canvas.height, effectiveTheme(), $("view").value);
+    const error = page.draw(canvas.width, canvas.height, effectiveTheme(), $("view").value,
+                            $("plots").checked);
     if (error) fail(error);
     $("status").textContent = tauText(page.tau(), page.scene()) +
       (page.atEnd() ? " (end of the run)" : "");
@@ -312,6 +313,7 @@
       $("speed-value").textContent = fmt(speed());
     });
     $("view").addEventListener("change", () => { dirty = true; updateLink(); });
+    $("plots").addEventListener("change", () => { dirty = true; });
     $("theme").addEventListener("change", () => { applyTheme(); updateLink(); });
     window.matchMedia("(prefers-color-scheme: dark)").addEventListener("change", applyTheme);
     $("copy-link").addEventListener("click", () => {

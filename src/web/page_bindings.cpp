@@ -165,12 +165,13 @@ class Page {
   std::string toml() const { return write_scene(session_.scene()); }
 
   // Draws the current frame into the canvas (width x height pixels). "" or the error.
-  std::string draw(int width, int height, const std::string& theme, const std::string& view) {
+  std::string draw(int width, int height, const std::string& theme, const std::string& view,
+                   bool plots) {
     return guarded([&] {
       if (context_ <= 0) throw std::runtime_error("no WebGL2 context");
       if (!renderer_ || renderer_->width() != width || renderer_->height() != height)
         renderer_ = std::make_unique<Renderer>(width, height);
-      renderer_->draw(session_.snapshot(width, height, theme, view));
+      renderer_->draw(session_.snapshot(width, height, theme, view, plots));
       // The renderer's framebuffer to the canvas's: same size, same orientation.
       glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
       glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "physics/run_loop.h"
+#include "web/web_plots.h"
 
 namespace cb {
 
@@ -46,7 +47,21 @@ void WebSession::replace(SceneDesc scene, std::string text, std::string path,
   double tau_stop = scene.integrator.t_end;
   const double bead_steps = static_cast<double>(scene.chain.beads) * (tau_stop / dt);
   if (bead_steps > kPrePassBeadSteps) tau_stop *= kPrePassBeadSteps / bead_steps;
-  RunExtent extent = measure_run(scene, tau_stop, dt);
+  // The plots' frames: at most kMaxHistory of them over the run, on the step grid.
+  const std::int64_t frame_steps = std::max<std::int64_t>(
+      1, static_cast<std::int64_t>(
+             std::ceil(static_cast<double>(planned_steps(scene)) / kMaxHistory)));
+  RunExtent extent = measure_run(scene, tau_stop, dt, frame_steps);
+  OverlaySetup setup;
+  setup.title = scene.title;
+  setup.omega0 = scene.units ? scene.units->omega0() : 0.0;
+  setup.tau_per_frame = static_cast<double>(frame_steps) * dt;
+  setup.tau_end = std::max(setup.tau_per_frame, extent.tau_stop);
+  setup.phi_min = extent.phi_min;
+  setup.phi_max = extent.phi_max;
+  setup.energy_max = extent.energy_max;
+  setup.strain_scale = scene.chain.breakable() ? scene.chain.threshold : extent.strain_range;
+  setup.exact = scene.chain.beads <= kExactMaxBeads;
   auto sim = std::make_unique<Integrator>(scene.chain, make_forcing(scene.drive),
                                           IntegratorOptions{dt, 1});
   scene_ = std::move(scene);
@@ -55,13 +70,22 @@ void WebSession::replace(SceneDesc scene, std::string text, std::string path,
   overrides_ = std::move(o);
   extent_ = std::move(extent);
   sim_ = std::move(sim);
+  frame_steps_ = frame_steps;
+  setup_ = setup;
   error_.clear();
+  start_history();
+}
+
+void WebSession::start_history() {
+  history_ = std::make_unique<OverlayHistory>(scene_.chain, scene_.drive, setup_);
+  history_->record(0, sim_->state(), sim_->force_now());
 }
 
 void WebSession::restart() {
   sim_ = std::make_unique<Integrator>(scene_.chain, make_forcing(scene_.drive),
                                       IntegratorOptions{scene_.integrator.dt, 1});
   error_.clear();
+  start_history();
 }
 
 std::int64_t WebSession::last_step() const {
@@ -86,7 +110,10 @@ bool WebSession::advance_to(std::int64_t step) {
   // `run`'s own stop rule (t_end, after_break past the first break), capped at `step`.
   const StopRule stop{std::min(step, planned_steps(scene_)), scene_.integrator.after_break, false,
                       nullptr};
-  if (run_until(*sim_, stop) == RunEnd::Failed) {
+  const Observer plots{frame_steps_, false, [this](const Integrator& s) {
+                         history_->record(s.state().step / frame_steps_, s.state(), s.force_now());
+                       }};
+  if (run_until(*sim_, stop, {plots}) == RunEnd::Failed) {
     error_ = sim_->error();
     return false;
   }
@@ -94,13 +121,18 @@ bool WebSession::advance_to(std::int64_t step) {
 }
 
 RenderSnapshot WebSession::snapshot(int width, int height, const std::string& theme,
-                                    const std::string& view) const {
+                                    const std::string& view, bool plots) const {
   FrameOptions o;
   o.size = std::to_string(width) + "x" + std::to_string(height);
   o.theme = theme;
   o.view = view;
-  const SnapshotStyle style = snapshot_style(scene_, frame_settings(scene_, o), extent_);
-  return build_snapshot(sim_->state(), scene_.chain, sim_->force_now(), style);
+  SnapshotStyle style = snapshot_style(scene_, frame_settings(scene_, o), extent_);
+  const OverlayLayout layout = overlay_layout(width, height, web_plot_switches());
+  plots = plots && layout.enabled;
+  if (plots) style.chain_height = layout.chain_height;
+  RenderSnapshot snap = build_snapshot(sim_->state(), scene_.chain, sim_->force_now(), style);
+  if (plots) snap.layers.push_back(web_plot_layer(history_->data(), layout, style.theme));
+  return snap;
 }
 
 }  // namespace cb

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "app/frames.h"
+#include "overlay/overlay_history.h"
 #include "physics/integrator.h"
 #include "scene/scene.h"
 #include "snapshot/snapshot.h"
@@ -56,12 +57,20 @@ class WebSession {
   bool advance_to(std::int64_t step);
   std::int64_t step_at(double tau) const;  // the first grid step at or after tau
 
-  // The frame as `chainbreak snapshot` lays it out for this scene (size, theme, view).
-  RenderSnapshot snapshot(int width, int height, const std::string& theme,
-                          const std::string& view) const;
+  // The frame as `chainbreak snapshot` lays it out for this scene (size, theme, view); with
+  // `plots`, the chain in the upper band and the overlay's plots below it (web_plots.h).
+  RenderSnapshot snapshot(int width, int height, const std::string& theme, const std::string& view,
+                          bool plots) const;
 
  private:
   void replace(SceneDesc scene, std::string text, std::string path, std::vector<Override> o);
+  void start_history();
+
+  // The plots' histories (the overlay's physics side, overlay_history.h), recorded every
+  // frame_steps_ steps of the run: frames on the scene's own step grid.
+  std::int64_t frame_steps_ = 1;
+  OverlaySetup setup_;
+  std::unique_ptr<OverlayHistory> history_;
 
   SceneDesc scene_;
   std::string text_, path_;

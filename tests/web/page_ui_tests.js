@@ -244,6 +244,7 @@ groups.pixels = async (browser) => {
     fs.rmSync(dir, { recursive: true });
     const { page, problems } = await open(browser, "?scene=anomalous_breaking");
     await page.selectOption("#theme", theme);
+    await page.uncheck("#plots");  // `snapshot` without --overlay: the chain alone
     await page.evaluate((t) => window.chainbreak.runTo(t), tau);
     const result = await page.evaluate(async (b64) => {
       const blob = await (await fetch("data:image/png;base64," + b64)).blob();
