@@ -3,9 +3,10 @@
 //
 // Design note: errors cross into JavaScript as strings ("" when all went well), never as C++
 // exceptions, so page.js can show the reader's message next to the control that caused it and
-// the test API can throw an Error carrying it. The canvas keeps its drawing buffer
-// (preserveDrawingBuffer) so a PNG of it, or a test's readPixels, sees the frame outside a
-// requestAnimationFrame callback.
+// the test API can throw an Error carrying it. The renderer draws into its own framebuffer,
+// blitted to the canvas: pixels() reads that framebuffer at any time, and the page's PNG
+// button draws and encodes in one task, so the canvas need not keep its buffer
+// (preserveDrawingBuffer, a copy per frame on SwiftShader).
 #include <emscripten/bind.h>
 #include <emscripten/html5.h>
 #include <emscripten/val.h>
@@ -42,8 +43,8 @@ class Page {
     a.majorVersion = 2;
     a.minorVersion = 0;
     a.alpha = false;
-    a.antialias = false;  // the renderer antialiases its own shapes, as in the program
-    a.preserveDrawingBuffer = true;
+    a.antialias = false;              // the renderer antialiases its own shapes, as in the program
+    a.preserveDrawingBuffer = false;  // PNGs and pixels() read right after drawing
     context_ = emscripten_webgl_create_context("#chain", &a);
     if (context_ <= 0)
       return "this browser gives no WebGL2 context (error " + std::to_string(context_) +

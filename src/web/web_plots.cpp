@@ -135,7 +135,7 @@ void phi_panel(Painter& p, const OverlayData& d, const OverlayLayout& layout) {
 
 void energy_panel(Painter& p, const OverlayData& d, const OverlayLayout& layout) {
   const PlotMapping m = energy_mapping(layout, d);
-  p.axes(layout.energy, m, "energy per particle E/N³: total, kinetic, potential", "τ");
+  p.axes(layout.energy, m, "energy E/N³: total, kinetic, potential", "τ");
   const Theme& t = p.theme();
   p.times(m, d);
   p.curve(m, d.history_tau, d.energy_kinetic, t.kinetic, p.line_px());
@@ -146,7 +146,7 @@ void energy_panel(Painter& p, const OverlayData& d, const OverlayLayout& layout)
 void spacetime_panel(Painter& p, const OverlayData& d, const OverlayLayout& layout,
                      ThemeName theme) {
   const PlotMapping m = spacetime_mapping(layout, d);
-  p.axes(layout.spacetime, m, "strain φ_j/φ_c over springs j and time τ", "j");
+  p.axes(layout.spacetime, m, "strain φ_j/φ_c (j across, τ up)", "j");
   const int rows = d.spacetime_rows(), columns = d.spacetime_columns;
   if (rows == 0 || columns == 0) return;
   const float column_w = m.area.w / static_cast<float>(columns);
@@ -164,21 +164,39 @@ void spacetime_panel(Painter& p, const OverlayData& d, const OverlayLayout& layo
   }
 }
 
+void map_panel(Painter& p, const WebBreakMap& map, const OverlayLayout& layout) {
+  const double hi = map.zeta.empty() ? 1.0 : map.zeta.back();
+  const PlotMapping m{plot_area(layout.modes, layout.font_px), 0.0, hi, 0.0,
+                      static_cast<double>(std::max(1, map.beads))};
+  p.axes(layout.modes, m, "first break j vs ζ_c = φ_c/β (exact)", "ζ_c");
+  const Theme& t = p.theme();
+  const float size = std::max(2.0f, p.line_px() * 3.0f);
+  for (std::size_t i = 0; i < map.zeta.size(); ++i) {
+    if (map.spring[i] < 0) continue;
+    const float x = m.px(map.zeta[i]), y = m.py(map.spring[i]);
+    p.rect({x - size / 2, y - size / 2, size, size},
+           map.spring[i] == map.beads ? t.series[2] : t.series[0]);
+  }
+  if (map.current >= 0 && map.current <= hi)
+    p.line(m.px(map.current), m.area.y, m.px(map.current), m.area.bottom(), t.cursor, 2.0f);
+}
+
 }  // namespace
 
 OverlaySwitches web_plot_switches() {
   OverlaySwitches s;
   s.hud = false;
-  s.modes = false;
   return s;
 }
 
-Layer web_plot_layer(const OverlayData& data, const OverlayLayout& layout, ThemeName theme_name) {
+Layer web_plot_layer(const OverlayData& data, const WebBreakMap& map, const OverlayLayout& layout,
+                     ThemeName theme_name) {
   Layer layer;
   Painter p(layer, theme(theme_name), layout.font_px, std::max(1.0f, layout.line_px));
   if (!layout.phi.empty()) phi_panel(p, data, layout);
   if (!layout.energy.empty()) energy_panel(p, data, layout);
   if (!layout.spacetime.empty()) spacetime_panel(p, data, layout, theme_name);
+  if (!layout.modes.empty() && !map.zeta.empty()) map_panel(p, map, layout);
   return layer;
 }
 

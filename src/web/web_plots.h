@@ -10,11 +10,23 @@
 
 namespace cb {
 
-// The page's panels: the plots (phi_1, phi_N/2, phi_N with the exact lines; the energy) and
-// the space-time picture; the HUD and the breaks are HTML beside the canvas.
+// Which spring breaks first against zeta_c = phi_c / beta for a ramp (the paper's Fig. 4 map
+// for one N and gamma), by the exact solution (figures/break_maps.h, ramp_first_break), and
+// where the scene's own setting lies.
+struct WebBreakMap {
+  std::vector<double> zeta;
+  std::vector<int> spring;  // first-breaking spring at each zeta (-1: none)
+  double current = -1.0;    // the scene's zeta_c
+  int beads = 0;
+};
+
+// The page's panels: the plots (phi_1, phi_N/2, phi_N with the exact lines; the energy), the
+// space-time picture, and the breaking map in the place of the overlay's mode bars; the HUD
+// and the breaks are HTML beside the canvas.
 OverlaySwitches web_plot_switches();
 
-// A layer drawing `data` into the panels of `layout`, in the theme's colours.
-Layer web_plot_layer(const OverlayData& data, const OverlayLayout& layout, ThemeName theme);
+// A layer drawing `data` (and `map`, when it has points) into the panels of `layout`.
+Layer web_plot_layer(const OverlayData& data, const WebBreakMap& map, const OverlayLayout& layout,
+                     ThemeName theme);
 
 }  // namespace cb

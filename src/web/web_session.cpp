@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "figures/break_maps.h"
 #include "physics/run_loop.h"
 #include "web/web_plots.h"
 
@@ -19,6 +20,10 @@ std::int64_t planned_steps(const SceneDesc& s) {
 // long chain's whole run would hold the page for seconds: past this many bead-steps the
 // pre-pass stops early and the chain may leave the frame late in the run.
 constexpr double kPrePassBeadSteps = 3e8;
+
+// The breaking map: this many exact first breaks, for chains up to this long.
+constexpr int kMapSamples = 60;
+constexpr int kMapMaxBeads = 100;
 
 }  // namespace
 
@@ -71,6 +76,7 @@ void WebSession::replace(SceneDesc scene, std::string text, std::string path,
   extent_ = std::move(extent);
   sim_ = std::move(sim);
   frame_steps_ = frame_steps;
+  break_map_.reset();
   setup_ = setup;
   error_.clear();
   start_history();
@@ -120,6 +126,29 @@ bool WebSession::advance_to(std::int64_t step) {
   return true;
 }
 
+const WebBreakMap& WebSession::break_map() const {
+  if (break_map_) return *break_map_;
+  WebBreakMap map;
+  const ChainParams& c = scene_.chain;
+  // The map is the paper's for a ramp on the uniform chain of the abs rule; a long chain's
+  // exact first breaks would hold the page too long.
+  if (scene_.drive.type == DriveType::Ramp && c.breakable() && c.uniform_thresholds() &&
+      c.break_on == BreakMode::Abs && !c.pull_string && c.beads <= kMapMaxBeads &&
+      scene_.drive.beta > 0) {
+    map.beads = c.beads;
+    map.current = c.threshold / scene_.drive.beta;
+    const double hi = std::max(1.5 * map.current, 6.0 * c.beads);
+    for (int i = 1; i <= kMapSamples; ++i) {
+      const double zeta = hi * i / kMapSamples;
+      const FirstBreak b = ramp_first_break(c.beads, c.gamma, zeta);
+      map.zeta.push_back(zeta);
+      map.spring.push_back(b.broke ? b.spring : -1);
+    }
+  }
+  break_map_ = std::move(map);
+  return *break_map_;
+}
+
 RenderSnapshot WebSession::snapshot(int width, int height, const std::string& theme,
                                     const std::string& view, bool plots) const {
   FrameOptions o;
@@ -131,7 +160,8 @@ RenderSnapshot WebSession::snapshot(int width, int height, const std::string& th
   plots = plots && layout.enabled;
   if (plots) style.chain_height = layout.chain_height;
   RenderSnapshot snap = build_snapshot(sim_->state(), scene_.chain, sim_->force_now(), style);
-  if (plots) snap.layers.push_back(web_plot_layer(history_->data(), layout, style.theme));
+  if (plots)
+    snap.layers.push_back(web_plot_layer(history_->data(), break_map(), layout, style.theme));
   return snap;
 }
 

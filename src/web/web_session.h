@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@
 #include "physics/integrator.h"
 #include "scene/scene.h"
 #include "snapshot/snapshot.h"
+#include "web/web_plots.h"
 
 namespace cb {
 
@@ -65,12 +67,14 @@ class WebSession {
  private:
   void replace(SceneDesc scene, std::string text, std::string path, std::vector<Override> o);
   void start_history();
+  const WebBreakMap& break_map() const;
 
   // The plots' histories (the overlay's physics side, overlay_history.h), recorded every
   // frame_steps_ steps of the run: frames on the scene's own step grid.
   std::int64_t frame_steps_ = 1;
   OverlaySetup setup_;
   std::unique_ptr<OverlayHistory> history_;
+  mutable std::optional<WebBreakMap> break_map_;  // made on the first frame that shows it
 
   SceneDesc scene_;
   std::string text_, path_;
