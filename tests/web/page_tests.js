@@ -8,7 +8,6 @@
 const assert = require("node:assert/strict");
 const { execFileSync } = require("node:child_process");
 const fs = require("node:fs");
-const os = require("node:os");
 const path = require("node:path");
 
 let chromium, axeSource;
@@ -60,8 +59,8 @@ function shippedScenes() {
   return out;
 }
 
-// The scene's drive type as the scene reader sees it: the CLI's own answer is in the page too,
-// but the test asks neither; it reads the one line the schema requires.
+// The drive's kind as the scene file names it ([drive] type; a ramp when absent), to pick the
+// comparison: bit for bit, or within 1e-12 for a sine.
 function driveType(file) {
   const m = fs.readFileSync(file, "utf8").match(/^\s*type\s*=\s*"(\w+)"/m);
   return m ? m[1] : "ramp";
