@@ -9,6 +9,7 @@
 #include "drive/drive.h"
 #include "exact/exact_chain.h"
 #include "exact/first_break.h"
+#include "physics/chain.h"
 
 namespace {
 
@@ -33,10 +34,11 @@ cb::ChainParams chain_of(int beads, double gamma, double threshold,
 }
 
 // Brute force: sample every phi_j every `dt` from 0; at the first sample where a spring is
-// at the threshold, the spring whose linearly interpolated crossing is earliest.
+// at the threshold, the spring whose linearly interpolated crossing is earliest. Any chain
+// (unequal beads and springs through ExactChain's LAPACK modes), per-spring thresholds.
 cb::FirstBreak dense_first_break(const cb::ChainParams& p, const cb::DriveDesc& d, double t_end,
                                  double dt) {
-  const cb::ExactChain chain(p.beads, p.gamma, d);
+  const cb::ExactChain chain(p, d);
   const bool abs = p.break_on == cb::BreakMode::Abs;
   std::vector<double> prev(p.beads, 0.0), now;
   for (long k = 1; k * dt <= t_end; ++k) {
@@ -47,8 +49,9 @@ cb::FirstBreak dense_first_break(const cb::ChainParams& p, const cb::DriveDesc& 
     for (int j = 0; j < p.beads; ++j)
       for (double s : {1.0, -1.0}) {
         if (s < 0 && !abs) continue;
-        if (s * now[j] < p.threshold) continue;
-        const double t = tau - dt * (s * now[j] - p.threshold) / (s * now[j] - s * prev[j]);
+        const double c = p.threshold_of(j + 1);
+        if (s * now[j] < c) continue;
+        const double t = tau - dt * (s * now[j] - c) / (s * now[j] - s * prev[j]);
         if (t < best.tau) best = {true, j + 1, t};
       }
     if (best.broke) return best;
@@ -281,4 +284,36 @@ TEST_CASE("Stretch mode ignores compression, expr drives are refused", "[first_b
   expr.type = cb::DriveType::Expr;
   expr.expr = "t";
   CHECK_THROWS_AS(cb::exact_first_break(chain_of(5, 0.0, 1.0), expr, 50.0), std::invalid_argument);
+}
+
+TEST_CASE("Per-spring thresholds and unequal chains agree with a dense scan",
+          "[first_break][unequal]") {
+  // A weak link in the paper's chain (closed-form modes) and a heavy bead with a stiff segment
+  // (LAPACK's modes), both with a lower threshold at spring 12, under fast and slow ramps.
+  const double dt = 2e-3;
+  for (bool unequal : {false, true})
+    for (double gamma : {0.0, 0.01})
+      for (double zeta : {5.0, 100.0, 160.0}) {
+        cb::ChainParams p = chain_of(30, gamma, zeta);
+        p.thresholds.assign(30, zeta);
+        p.thresholds[11] = 0.7 * zeta;
+        if (unequal) {
+          p.mass.assign(30, 1.0);
+          p.mass[19] = 5.0;
+          p.stiffness.assign(30, 1.0);
+          for (int j = 5; j < 10; ++j) p.stiffness[j] = 3.0;
+        }
+        const auto exact = cb::exact_first_break(p, ramp(1.0), 400.0);
+        const auto dense = dense_first_break(p, ramp(1.0), 400.0, dt);
+        INFO("unequal " << unequal << " gamma " << gamma << " zeta " << zeta << ": exact spring "
+                        << exact.spring << " at " << exact.tau << ", dense " << dense.spring
+                        << " at " << dense.tau);
+        REQUIRE(exact.broke);
+        CHECK(exact.spring == dense.spring);
+        CHECK(std::abs(exact.tau - dense.tau) <= dt);
+        // The located time is a root of the exact phi at that spring's own threshold.
+        const double c = p.threshold_of(exact.spring);
+        CHECK(std::abs(std::abs(cb::ExactChain(p, ramp(1.0)).phi(exact.spring, exact.tau)) - c) <=
+              1e-9 * c);
+      }
 }

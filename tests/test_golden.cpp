@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "drive/drive.h"
 #include "gl/gl_context.h"
@@ -135,6 +136,72 @@ cb::RenderSnapshot ribbon_1e5() {
   return cb::build_snapshot(state, chain(n, std::numeric_limits<double>::infinity()), 1.0, style);
 }
 
+// An unequal chain (issue #21) held in static equilibrium by a constant pull f = 0.6: every
+// spring carries f, so phi_j = f / K_j and psi_j = sum_{i <= j} f / K_i (exact, no
+// integrator). Springs 1-15 are stiff (K = 4) and drawn wider, beads 8 and 22 heavy (m = 4,
+// drawn with 4x the area) and bead 25 light (m = 1/4); spring 20 is a weak link
+// (phi_c,20 = 0.5 against 2 elsewhere): the colours, phi_j / phi_c,j, show it nearest to
+// breaking (0.6 of the way for the soft springs, 0.075 for the stiff ones, 1.2 -> clamped for
+// the weak link, which has just broken: the recoiling halves).
+cb::RenderSnapshot unequal_chain(cb::ThemeName theme) {
+  const int n = 30;
+  const double f = 0.6;
+  cb::ChainParams params = chain(n, 2.0);
+  params.mass.assign(n, 1.0);
+  params.mass[7] = params.mass[21] = 4.0;
+  params.mass[24] = 0.25;
+  params.stiffness.assign(n, 1.0);
+  for (int j = 1; j <= 15; ++j) params.stiffness[j - 1] = 4.0;
+  params.thresholds.assign(n, 2.0);
+  params.thresholds[19] = 0.5;
+  cb::ChainState state;
+  state.tau = 41.0;
+  state.vel.assign(n, 0.0);
+  double psi = 0.0;
+  for (int j = 1; j <= n; ++j) state.psi.push_back(psi += f / params.stiffness[j - 1]);
+  state.broken = {20};
+  state.breaks = {cb::BreakEvent{20, 40.0, 4000}};
+  cb::SnapshotStyle style;
+  style.width = kWidth;
+  style.height = kHeight;
+  style.theme = theme;
+  style.psi_range = state.psi.back();
+  style.force_range = 1.0;
+  style.threshold = params.min_threshold();
+  return cb::build_snapshot(state, params, f, style);
+}
+
+// A fast pull's cascade (scenes/units_example.toml's breaks: spring 30 first at tau 51.60,
+// then 14 more near the wall within 0.35, and spring 4 at 58.88), each broken spring opened
+// by 1.5: the first break's label in bold over an accent leader, the later ones muted and
+// kept apart in a staircase, the rest counted.
+cb::RenderSnapshot cascade_labels(cb::ThemeName theme) {
+  const int n = 30;
+  const std::vector<cb::BreakEvent> breaks{
+      {30, 51.60, 0}, {19, 55.71, 0}, {20, 55.71, 0}, {14, 55.76, 0}, {10, 55.76, 0},
+      {2, 55.77, 0},  {6, 55.79, 0},  {5, 55.79, 0},  {7, 55.81, 0},  {8, 55.82, 0},
+      {12, 55.84, 0}, {16, 55.85, 0}, {17, 55.86, 0}, {22, 55.93, 0}, {4, 58.88, 0}};
+  cb::ChainState state;
+  state.tau = 60.0;
+  state.breaks = breaks;
+  for (const cb::BreakEvent& b : breaks) state.broken.push_back(b.spring);
+  std::sort(state.broken.begin(), state.broken.end());
+  double shift = 0.0;
+  for (int j = 1; j <= n; ++j) {
+    if (std::binary_search(state.broken.begin(), state.broken.end(), j)) shift += 1.5;
+    state.psi.push_back(shift);
+  }
+  state.vel.assign(n, 0.0);
+  cb::SnapshotStyle style;
+  style.width = kWidth;
+  style.height = kHeight;
+  style.theme = theme;
+  style.psi_range = state.psi.back();
+  style.force_range = 1.0;
+  style.threshold = 2.0;
+  return cb::build_snapshot(state, chain(n, 2.0), 0.0, style);
+}
+
 }  // namespace
 
 TEST_CASE("Golden frames match within tolerance", "[golden]") {
@@ -164,4 +231,16 @@ TEST_CASE("Golden frames match within tolerance", "[golden]") {
   const auto ribbon = ribbon_1e5();
   CHECK(ribbon.ribbon);
   check_golden("ribbon_1e5", backend, renderer.render(ribbon));
+
+  // Issue #21's pictures: an unequal chain, and a cascade's labels, in both themes.
+  for (const cb::ThemeName theme : {cb::ThemeName::Dark, cb::ThemeName::Light}) {
+    const std::string suffix = theme == cb::ThemeName::Light ? "_light" : "";
+    const auto unequal = unequal_chain(theme);
+    CHECK(unequal.break_labels.size() == 1);
+    check_golden("unequal_chain" + suffix, backend, renderer.render(unequal));
+    const auto cascade = cascade_labels(theme);
+    CHECK(cascade.break_labels.front().first);
+    CHECK(cascade.break_labels.front().spring == 30);
+    check_golden("cascade_labels" + suffix, backend, renderer.render(cascade));
+  }
 }

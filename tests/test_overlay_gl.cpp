@@ -185,6 +185,60 @@ TEST_CASE("Overlay GL: plotted data land on the pixels the plot's mapping gives"
   }
 }
 
+TEST_CASE("Overlay GL: the HUD's first break stands out behind an accent bar, later ones muted",
+          "[overlay]") {
+  auto context = cb::test::create_or_skip(cb::GlBackend::Auto);
+  if (!context) return;
+  constexpr int kW = 1280, kH = 720;
+  cb::Overlay overlay(kW, kH, 30.0, cb::OverlaySwitches{});
+  const cb::OverlayLayout& l = overlay.layout();
+  REQUIRE(l.enabled);
+  const cb::Theme& t = cb::theme(cb::ThemeName::Dark);
+  // Pixels of the HUD within 10 per channel of a colour.
+  const auto count = [&](const cb::Image& image, const cb::OverlayRgb& c) {
+    int n = 0;
+    for (int y = static_cast<int>(l.hud.y); y < static_cast<int>(l.hud.bottom()); ++y)
+      for (int x = static_cast<int>(l.hud.x); x < static_cast<int>(l.hud.right()); ++x)
+        n += channel_distance(image, x, y, c) <= 10;
+    return n;
+  };
+  cb::Renderer renderer(kW, kH);
+  const auto frame = [&](std::vector<cb::OverlayBreak> breaks) {
+    auto d = std::make_shared<cb::OverlayData>();
+    d->beads = 30;
+    d->tau = 50.0;
+    d->tau_end = 100.0;
+    d->breaks = std::move(breaks);
+    cb::RenderSnapshot snap;
+    snap.width = kW;
+    snap.height = kH;
+    snap.background = cb::Color{0.09f, 0.094f, 0.11f, 1.0f};
+    snap.layers.resize(cb::kLayerCount);
+    snap.overlay = d;
+    return draw(renderer, &overlay, snap);
+  };
+  const cb::Image none = frame({});
+  const cb::Image three = frame({{30, 31.0}, {10, 45.41}, {9, 45.44}});
+  CHECK(count(none, t.accent) == 0);
+  // The bar: 0.3 x 0.9 of the font size, about 4 x 13 px at 720p, opaque.
+  CHECK(count(three, t.accent) >= 30);
+  // The later breaks are muted, in the secondary text colour (a grey), not the marker's amber:
+  // the only warm pixels (red well above blue) are the bar's.
+  const auto warm = [&](const cb::Image& image) {
+    int n = 0;
+    for (int y = static_cast<int>(l.hud.y); y < static_cast<int>(l.hud.bottom()); ++y)
+      for (int x = static_cast<int>(l.hud.x); x < static_cast<int>(l.hud.right()); ++x) {
+        const std::uint8_t* p = image.pixel(x, y);
+        n += int(p[0]) - int(p[2]) > 60;
+      }
+    return n;
+  };
+  const double fs = l.font_px;
+  CHECK(warm(none) == 0);
+  CHECK(warm(three) <= (std::ceil(0.3 * fs) + 2) * (std::ceil(0.9 * fs) + 2));
+  CHECK(count(three, t.marker) == 0);
+}
+
 TEST_CASE("Overlay: a missing font names the package to install", "[overlay]") {
   auto context = cb::test::create_or_skip(cb::GlBackend::Auto);
   if (!context) return;

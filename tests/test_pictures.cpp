@@ -227,9 +227,9 @@ TEST_CASE("snapshot stacks two scenes in one picture, each band showing its own 
   const cb::Image image = cb::read_png(png);
   REQUIRE(image.width == 640);
   REQUIRE(image.height == 480);
-  // The break marker is drawn in the theme's marker colour: in the top band
-  // (the fast pull) and nowhere in the bottom one.
-  const cb::Rgb8 marker = cb::theme(cb::ThemeName::Light).marker;
+  // The first break's marker and leader are drawn in the theme's accent colour: in the top
+  // band (the fast pull) and nowhere in the bottom one.
+  const cb::Rgb8 marker = cb::theme(cb::ThemeName::Light).accent;
   int top = 0, bottom = 0;
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {

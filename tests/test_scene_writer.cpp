@@ -17,6 +17,9 @@ void require_same(const cb::SceneDesc& a, const cb::SceneDesc& b) {
   CHECK(a.chain.threshold == b.chain.threshold);
   CHECK(a.chain.break_on == b.chain.break_on);
   CHECK(a.chain.pull_string == b.chain.pull_string);
+  CHECK(a.chain.mass == b.chain.mass);  // issue #21's arrays, element for element
+  CHECK(a.chain.stiffness == b.chain.stiffness);
+  CHECK(a.chain.thresholds == b.chain.thresholds);
   const cb::DriveDesc &d = a.drive, &e = b.drive;
   CHECK(d.type == e.type);
   CHECK(d.t0 == e.t0);

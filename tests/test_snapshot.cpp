@@ -258,7 +258,7 @@ TEST_CASE("Force arrow: length proportional to f, gone when the pull string brok
   CHECK(after.arrow_length == 0.0);
   CHECK(after.layers[cb::kLayerForce].triangles.empty());
   CHECK(after.layers[cb::kLayerForce].segments.empty());
-  CHECK(has_label(after, "pull string broke, τ = 0.00"));
+  CHECK(has_label(after, "pull string broke first, τ = 0.00"));
 }
 
 TEST_CASE("Breaking: recoiling halves, a fading flash and a marker that stays", "[snapshot]") {
@@ -285,7 +285,7 @@ TEST_CASE("Breaking: recoiling halves, a fading flash and a marker that stays", 
   state.tau = 13.0;  // age 0.5
   const auto young = cb::build_snapshot(state, params, 0.5, style);
   REQUIRE(young.breaks_shown.size() == 1);
-  CHECK(has_label(young, "spring 7 broke, τ = 12.50"));
+  CHECK(has_label(young, "spring 7 broke first, τ = 12.50"));
   CHECK(flash_at(young) == 1);
   const auto& springs = young.layers[cb::kLayerChain].springs;
   REQUIRE(springs.size() == static_cast<std::size_t>(n - 1 + 2));  // intact + two halves
@@ -302,7 +302,7 @@ TEST_CASE("Breaking: recoiling halves, a fading flash and a marker that stays", 
   state.tau = 20.0;  // age 7.5: recoiled to 30% of the gap, flash gone, marker stays
   const auto old = cb::build_snapshot(state, params, 0.5, style);
   CHECK(flash_at(old) == 0);
-  CHECK(has_label(old, "spring 7 broke, τ = 12.50"));
+  CHECK(has_label(old, "spring 7 broke first, τ = 12.50"));
   const auto& o = old.layers[cb::kLayerChain].springs;
   const auto& ob = old.layers[cb::kLayerBeads].beads;
   // The gap is 2.5 spacings; a half is capped at the gap a spring breaks at,
@@ -339,7 +339,7 @@ TEST_CASE("Breaking from the integrator shows the spring that broke", "[snapshot
   style.psi_range = 5.0;
   const auto snap = cb::build_snapshot(sim.state(), params, 1.0, style);
   char expected[64];
-  std::snprintf(expected, sizeof expected, "spring %d broke, τ = %.2f", first.spring, first.tau);
+  std::snprintf(expected, sizeof expected, "spring %d broke first, τ = %.2f", first.spring, first.tau);
   CHECK(has_label(snap, expected));
 }
 

@@ -13,6 +13,7 @@
 #include "scene/scene.h"
 #include "test_support.h"
 #include "video_probe.h"
+#include "viewer_test_support.h"
 
 namespace {
 
@@ -26,21 +27,12 @@ const std::string kScene = std::string(CHAINBREAK_SCENES) + "/anomalous_breaking
 // the whole run, as `render` does) the one `snapshot --at 20` measures.
 const std::string kSets = "--set render.speed=12 --set integrator.t_end=20";
 
-// True, after saying so, when xvfb-run is missing: the test is skipped, not failed.
-bool skip_without_xvfb() {
-  if (std::system("command -v xvfb-run >/dev/null 2>&1") == 0) return false;
-  WARN("skipped: xvfb-run not found (apt-get install xvfb xauth)");
-  return true;
-}
+using cb::test::skip_without_xvfb;
+using cb::test::write_file;
 
 // `chainbreak view ARGS` on a private virtual screen large enough for a 1080p window.
 cb::test::RunResult view_under_xvfb(const std::string& args) {
-  return run_shell("xvfb-run -a -s '-screen 0 1920x1080x24' " + std::string(CHAINBREAK_EXE) +
-                   " view " + args);
-}
-
-void write_file(const std::string& path, const std::string& text) {
-  std::ofstream(path) << text;
+  return cb::test::view_on_screen("1920x1080", args);
 }
 
 // Writes `script` into the folder and runs `view ARGS --script` on it under Xvfb; it must

@@ -8,7 +8,7 @@
 #include "physics/integrator.h"
 #include "scene/scene.h"
 #include "snapshot/snapshot.h"
-#include "viewer/frame_placement.h"
+#include "viewer/dock_layout.h"
 #include "viewer/pacer.h"
 #include "viewer/phi_history.h"
 #include "viewer/record_clock.h"
@@ -104,6 +104,39 @@ TEST_CASE("a script's drive setting must belong to the scene's drive", "[viewer]
   CHECK(requests.apply_settings);
 }
 
+TEST_CASE("scripts resize the window, hide the panels and present, as a person would", "[viewer]") {
+  const auto actions =
+      cb::parse_script("0 resize 1280 720\n1 panels off\n2 present on\n3 layout l.json\n", "s.txt");
+  REQUIRE(actions.size() == 4);
+  cb::SceneDesc draft;
+  cb::ViewerModel model;
+  cb::ViewerRequests r;
+  cb::apply_script({actions[0]}, draft, model, r);
+  CHECK(r.resize_width == 1280);
+  CHECK(r.resize_height == 720);
+  cb::apply_script({actions[1]}, draft, model, r);
+  CHECK_FALSE(model.show_controls);
+  cb::apply_script({actions[2]}, draft, model, r);
+  CHECK(r.present == 1);
+  cb::apply_script({actions[3]}, draft, model, r);
+  CHECK(r.layout_path == "l.json");
+
+  auto error = [](const std::string& text) {
+    try {
+      cb::parse_script(text, "s.txt");
+    } catch (const cb::SceneError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  CHECK_THAT(error("0 resize 1280\n"), Catch::Contains("s.txt:1: resize needs WIDTH HEIGHT"));
+  CHECK_THAT(error("0 resize 1280 10\n"), Catch::Contains("64 .. 16384, got '10'"));
+  CHECK_THAT(error("0 resize wide 720\n"), Catch::Contains("got 'wide'"));
+  CHECK_THAT(error("0 panels maybe\n"), Catch::Contains("panels needs on or off"));
+  CHECK_THAT(error("0 present\n"), Catch::Contains("present needs on or off"));
+  CHECK_THAT(error("0 layout\n"), Catch::Contains("layout needs an argument"));
+}
+
 TEST_CASE("the phi history keeps every spring and halves itself when full", "[viewer]") {
   cb::ChainState state;
   state.psi = {0.5, 1.5, 2.0};
@@ -179,22 +212,99 @@ TEST_CASE("the session steps on render's frame grid, restarts and changes the vi
   CHECK(session.state().psi == std::vector<double>(30, 0.0));
 }
 
-TEST_CASE("the frame sits in the window as large as fits, centred, and maps both ways",
-          "[viewer]") {
-  const cb::FramePlacement same = cb::place_frame(1920, 1080, 1920, 1080);
-  CHECK(same.fills_window());
-  CHECK(same.one_to_one());
-  // A 16:9 frame in a 4:3 window: full width, bars above and below.
-  const cb::FramePlacement p = cb::place_frame(1920, 1080, 1024, 768);
-  CHECK(p.width == 1024);
-  CHECK(p.height == 576);
-  CHECK(p.x == 0);
-  CHECK(p.y == 96);
-  CHECK(p.gl_bottom() == 96);
-  CHECK_FALSE(p.fills_window());
-  CHECK(p.frame_x(512.0f) == Approx(960.0f));
-  CHECK(p.frame_y(96.0f) == Approx(0.0f));
-  CHECK(p.window_y(p.frame_y(400.0f)) == Approx(400.0f));
+TEST_CASE("the panels dock beside the picture, never over it, at every window size", "[viewer]") {
+  for (const auto& [w, h] : {std::pair{1280, 720}, {1920, 1080}, {3840, 2160}, {800, 600}})
+    for (const float scale : {1.0f, 2.0f})
+      for (const bool plot : {false, true}) {
+        INFO(w << "x" << h << " scale " << scale << " plot " << plot);
+        const cb::DockLayout d = cb::dock_layout(w, h, scale, true, plot);
+        // The picture, the controls and the plot tile the window without overlapping.
+        CHECK_FALSE(d.picture.overlaps(d.controls));
+        CHECK_FALSE(d.picture.overlaps(d.plot));
+        CHECK_FALSE(d.controls.overlaps(d.plot));
+        const int column = d.controls.w;
+        CHECK(d.picture.w + column == w);
+        CHECK(d.picture.h == h);
+        CHECK(d.controls.x == d.picture.right());
+        CHECK(d.controls.h + d.plot.h == h);
+        CHECK(d.plot.empty() == !plot);
+        // 400 px a unit of scale, at most 40 % of the width: the picture keeps the rest.
+        CHECK(column == std::min(static_cast<int>(400 * scale), static_cast<int>(0.4 * w)));
+        if (plot) CHECK(d.plot.h == std::min(static_cast<int>(320 * scale), int(0.4 * h)));
+      }
+  // Hidden panels (Tab, presentation mode): the picture is the window.
+  const cb::DockLayout hidden = cb::dock_layout(1920, 1080, 1.0f, false, true);
+  CHECK(hidden.picture.w == 1920);
+  CHECK(hidden.picture.h == 1080);
+  CHECK(hidden.controls.empty());
+  CHECK(hidden.plot.empty());
+}
+
+TEST_CASE("the panels' scale is the content scale over the framebuffer's", "[viewer]") {
+  // X11 or Windows on a HiDPI screen: pixels are small, the window counts pixels.
+  const cb::UiScale x11 = cb::ui_scale(2.0f, 1.0f, 1920, 1920);
+  CHECK(x11.pixel == 2.0f);
+  CHECK(x11.font_px() == 34.0f);
+  CHECK(x11.window_units() == 2.0f);
+  // A Retina Mac: the framebuffer has twice the window's coordinates; ImGui's sizes stay.
+  const cb::UiScale mac = cb::ui_scale(2.0f, 1.0f, 1440, 2880);
+  CHECK(mac.font_px() == 34.0f);
+  CHECK(mac.window_units() == 1.0f);
+  // --ui-scale multiplies; nonsense from the platform counts as 1.
+  CHECK(cb::ui_scale(1.0f, 1.5f, 100, 100).pixel == 1.5f);
+  CHECK(cb::ui_scale(0.0f, 1.0f, 100, 100).pixel == 1.0f);
+}
+
+TEST_CASE("the picture beside the panels is render's layout at the picture's size", "[viewer]") {
+  const cb::SceneDesc scene =
+      cb::load_scene(std::string(CHAINBREAK_SCENES) + "/anomalous_breaking.toml",
+                     {{"render.speed", "12"}, {"integrator.t_end", "20"}});
+  cb::Session session(scene, cb::RenderOptions{});
+  const cb::RenderPlan plan = session.plan_at(1520, 1080);
+  // The layout `render` makes for a 1520x1080 video of the same run (its own plan).
+  cb::RenderOptions options;
+  options.frame.size = "1520x1080";
+  cb::RenderPlan reference = cb::plan_render(scene, options);
+  cb::measure_plan(scene, reference);
+  CHECK(plan.style.width == 1520);
+  CHECK(plan.style.chain_height == reference.style.chain_height);
+  CHECK(plan.style.chain_height > 0);  // the overlay's band is there
+  CHECK(plan.overlay_layout.phi.x == reference.overlay_layout.phi.x);
+  CHECK(plan.overlay_layout.phi.w == reference.overlay_layout.phi.w);
+  const cb::SnapshotLayout a = cb::snapshot_layout(plan.style, scene.chain);
+  const cb::SnapshotLayout b = cb::snapshot_layout(reference.style, scene.chain);
+  CHECK(a.x_wall == b.x_wall);
+  CHECK(a.x_right == b.x_right);
+  CHECK(a.panels[0].centre_y == b.panels[0].centre_y);
+  // The session's own plan is untouched.
+  CHECK(session.plan().style.width == 1920);
+}
+
+TEST_CASE("the selected spring's marker encloses its two beads and no other", "[viewer]") {
+  cb::ChainParams params;
+  params.beads = 10;
+  cb::ChainState state;
+  state.psi = {0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0};
+  for (const cb::View view : {cb::View::Longitudinal, cb::View::Transverse}) {
+    cb::SnapshotStyle style;
+    style.width = 1000;
+    style.height = 500;
+    style.view = view;
+    const cb::SnapshotLayout layout = cb::snapshot_layout(style, params);
+    const cb::RenderSnapshot snap = cb::build_snapshot(state, params, 0.0, style);
+    const auto& beads = snap.layers[cb::kLayerBeads].beads;
+    REQUIRE(beads.size() == 10);
+    const cb::SpringBox m = cb::spring_marker(layout, state, 0, 4, 3.0f);
+    // Beads 3 and 4 (indices 2, 3) lie inside with 3 px to spare; beads 2 and 5 outside.
+    for (int i : {2, 3}) {
+      CHECK(beads[i].x - beads[i].radius >= m.x0 + 3.0f - 1e-3f);
+      CHECK(beads[i].x + beads[i].radius <= m.x1 - 3.0f + 1e-3f);
+      CHECK(beads[i].y - beads[i].radius >= m.y0 + 3.0f - 1e-3f);
+      CHECK(beads[i].y + beads[i].radius <= m.y1 - 3.0f + 1e-3f);
+    }
+    CHECK(beads[1].x + beads[1].radius < m.x0);
+    CHECK(beads[4].x - beads[4].radius > m.x1);
+  }
 }
 
 TEST_CASE("a real-time recording writes video frames by wall time, not one per display",

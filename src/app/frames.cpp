@@ -136,8 +136,10 @@ SnapshotStyle snapshot_style(const SceneDesc& scene, const RenderDesc& frame,
   }
   s.psi_range = extent.psi_range;
   s.force_range = extent.force_range;
-  s.threshold = scene.chain.breakable() ? scene.chain.threshold : 0.0;
-  s.strain_range = scene.chain.breakable() ? scene.chain.threshold : extent.strain_range;
+  // Springs with thresholds of their own are coloured by phi_j / phi_c,j; the legend's scale
+  // and the zoom's window use the smallest (the uniform chain's phi_c).
+  s.threshold = scene.chain.breakable() ? scene.chain.min_threshold() : 0.0;
+  s.strain_range = scene.chain.breakable() ? scene.chain.min_threshold() : extent.strain_range;
   return s;
 }
 

@@ -142,9 +142,8 @@ void measure_plan(const SceneDesc& scene, RenderPlan& p) {
   std::vector<double> breaks;
   for (const BreakEvent& b : p.extent.breaks) breaks.push_back(b.tau);
   p.grid.lay_out(p.extent.tau_stop, breaks);
-  p.style = snapshot_style(scene, p.frame, p.extent);
+  lay_out_frame(scene, p, p.frame.width, p.frame.height);
   if (p.overlay_layout.enabled) {
-    p.style.chain_height = p.overlay_layout.chain_height;  // the plots take the rest
     OverlaySetup& s = p.overlay_setup;
     s.title = scene.title;
     s.omega0 = scene.units ? scene.units->omega0() : 0.0;
@@ -155,6 +154,15 @@ void measure_plan(const SceneDesc& scene, RenderPlan& p) {
     s.energy_max = p.extent.energy_max;
     s.strain_scale = p.style.threshold > 0 ? p.style.threshold : p.style.strain_range;
   }
+}
+
+void lay_out_frame(const SceneDesc& scene, RenderPlan& p, int width, int height) {
+  p.frame.width = width;
+  p.frame.height = height;
+  p.overlay_layout = overlay_layout(width, height, p.overlay);
+  p.style = snapshot_style(scene, p.frame, p.extent);
+  if (p.overlay_layout.enabled)
+    p.style.chain_height = p.overlay_layout.chain_height;  // the plots take the rest
 }
 
 std::string plan_json(const SceneDesc& scene, const RenderPlan& p, const std::string& gl,

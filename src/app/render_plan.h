@@ -20,7 +20,7 @@ struct RenderPlan {
   // step dt = grid.dt() (never above the scene's). Laid out by measure_plan.
   FrameGrid grid;
   std::int64_t title_frames = 0;  // title card frames before the grid's first (--title-card)
-  RunExtent extent;  // what keeps the chain in the frame; where the run stops
+  RunExtent extent;               // what keeps the chain in the frame; where the run stops
   SnapshotStyle style;
   // The overlay: the parts asked for (scene [render], then --overlay / --no-overlay), where
   // they go (disabled when none is on or the frame is under 640x360) and what the physics
@@ -38,6 +38,10 @@ struct RenderPlan {
 RenderPlan plan_render(const SceneDesc& scene, const RenderOptions& options);
 // Measures the run (the physics pre-pass): where it stops, the frame count, the layout.
 void measure_plan(const SceneDesc& scene, RenderPlan& plan);
+// The measured plan's frame laid out at width x height: the overlay's panels and the chain's
+// style, as measure_plan lays out the plan's own size. The viewer gives it the part of its
+// window the docked panels leave free, so the picture there is `render`'s at that size.
+void lay_out_frame(const SceneDesc& scene, RenderPlan& plan, int width, int height);
 
 // The JSON sidecar: scene, parameters after overrides, frames, timing, codec, GL, breaks.
 std::string plan_json(const SceneDesc& scene, const RenderPlan& plan, const std::string& gl,

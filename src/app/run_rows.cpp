@@ -33,10 +33,15 @@ void set_energy(RunRow& row, const EnergyParts& e, int beads) {
   row.potential = per_particle(e.potential, beads);
 }
 
-EnergyParts energy_of(const std::vector<double>& vel, const std::vector<double>& phi) {
+// Kinetic 1/2 m_j psi_j'^2 and potential 1/2 K_j phi_j^2 (issue #21's general chain).
+EnergyParts energy_of(const ChainParams& chain, const std::vector<double>& vel,
+                      const std::vector<double>& phi) {
   EnergyParts e;
-  for (double v : vel) e.kinetic += 0.5 * v * v;
-  for (double p : phi) e.potential += 0.5 * p * p;
+  for (std::size_t i = 0; i < vel.size(); ++i) {
+    const int j = static_cast<int>(i) + 1;
+    e.kinetic += 0.5 * chain.mass_of(j) * vel[i] * vel[i];
+    e.potential += 0.5 * chain.stiffness_of(j) * phi[i] * phi[i];
+  }
   return e;
 }
 
@@ -97,7 +102,7 @@ RunOutcome run_formula(const SceneDesc& scene, const RunRequest& req, RowSink* s
   out.max_steps = last;
   const bool exact = req.solver == "exact";
   std::unique_ptr<ExactChain> chain;
-  if (exact) chain = std::make_unique<ExactChain>(n, scene.chain.gamma, scene.drive);
+  if (exact) chain = std::make_unique<ExactChain>(scene.chain, scene.drive);
   const Forcing forcing = make_forcing(scene.drive);
   auto f = [&](double tau) { return forcing(tau); };
   std::vector<double> psi(n), vel(n), phi(n);
@@ -129,7 +134,7 @@ RunOutcome run_formula(const SceneDesc& scene, const RunRequest& req, RowSink* s
       const double span = row.tau + kDelta - std::max(0.0, row.tau - kDelta);
       for (int i = 0; i < n; ++i) vel[i] = (after[i] - before[i]) / span;
     }
-    set_energy(row, energy_of(vel, phi), n);
+    set_energy(row, energy_of(scene.chain, vel, phi), n);
     sink->row(row);
     report(req, step);
   }
@@ -163,6 +168,11 @@ void check_run_request(const SceneDesc& scene, const RunRequest& request) {
     throw SceneError(scene.path +
                      ": the continuum formula Eq. (sum) needs a drive with values; impulses are "
                      "delta functions. Use --solver exact or rk4");
+  if (request.solver == "continuum" && !scene.chain.uniform_dynamics())
+    throw SceneError(scene.path +
+                     ": the continuum formula Eq. (sum) is the paper's large-N limit of the "
+                     "uniform chain; this chain has unequal chain.mass or chain.stiffness. Use "
+                     "--solver exact (any linear chain) or rk4");
 }
 
 RunOutcome run_scene(const SceneDesc& scene, const RunRequest& request, RowSink* sink) {

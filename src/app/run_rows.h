@@ -62,7 +62,8 @@ struct RunOutcome {
   std::optional<SimdPath> simd;           // rk4 only: the kernel's instruction set
 };
 
-// Throws SceneError for a request the scene cannot serve (every < 1, continuum + impulses).
+// Throws SceneError for a request the scene cannot serve (every < 1, continuum + impulses,
+// continuum for a chain of unequal beads or springs).
 void check_run_request(const SceneDesc& scene, const RunRequest& request);
 
 // The continuum's chain at tau: phi_j from Eq. (sum), psi_j by summing phi (the Python

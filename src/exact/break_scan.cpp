@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace cb::detail {
 
@@ -19,7 +20,10 @@ constexpr double kRound = 1e-13;     // relative rounding allowance in x_n'' fro
 // |phi''| <= M: phi <= min(qa, qb) with qa(u) = p0 + m0 u + M u^2/2 and
 // qb(u) = p1 - m1 (h - u) + M (h - u)^2 / 2. Both are convex and qa - qb is linear in u, so
 // max min(qa, qb) is at u = 0, u = h or where they meet.
-double interval_upper(double p0, double p1, double m0, double m1, double h, double M) {
+// `allowance`: what the computed samples may be off by beyond their rounding (0 for closed-form
+// modes; the eigen-solver's error otherwise, see break_scan.h).
+double interval_upper(double p0, double p1, double m0, double m1, double h, double M,
+                      double allowance) {
   double bound = std::max(p0, p1);
   const double slope = m0 - m1 + M * h;  // >= 0 whenever M really bounds |phi''|
   if (slope > 0.0) {
@@ -30,19 +34,22 @@ double interval_upper(double p0, double p1, double m0, double m1, double h, doub
       bound = std::max(bound, std::max(qa, qb));
     }
   }
-  return bound + 1e-12 * (std::abs(p0) + std::abs(p1));  // the samples' own rounding
+  return bound + 1e-12 * (std::abs(p0) + std::abs(p1)) + allowance;  // the samples' rounding
 }
 
 }  // namespace
 
-BreakScan::BreakScan(const ExactChain& chain, BreakMode mode, double t_end, double step)
+BreakScan::BreakScan(const ExactChain& chain, BreakMode mode, double t_end, double step,
+                     std::vector<double> ratio)
     : chain_(chain),
       n_(chain.beads()),
       abs_(mode == BreakMode::Abs),
       t_end_(t_end),
       step_(step),
+      ratio_(std::move(ratio)),
       pool_(kMaxDepth) {
   assert(step > 0.0 && std::isfinite(t_end));
+  assert(ratio_.empty() || ratio_.size() == static_cast<std::size_t>(n_));
   for (double t : chain.drive_terms().breakpoints())
     if (t > 0.0 && t < t_end) breakpoints_.push_back(t);
   bound_up_.resize(n_);
@@ -61,6 +68,11 @@ void BreakScan::sample(double tau, Node& node) const {
   node.rate.resize(n_);
   node.rate_before.resize(n_);
   for (int j = 1; j <= n_; ++j) evaluate(j, p, node.phi[j - 1], node.rate[j - 1]);
+  std::vector<double> errors;  // stays empty (no allocation) for closed-form modes
+  mode_errors(p, errors);
+  node.error.clear();
+  if (!errors.empty())
+    for (int j = 1; j <= n_; ++j) node.error.push_back(spring_error(j, errors));
   node.rate_before = node.rate;
   for (const Kick& k : chain_.drive_terms().kicks)
     if (k.tau == tau) {
@@ -86,9 +98,10 @@ bool BreakScan::advance() {
   for (int i = 0; i < n_; ++i) {
     const double M = accel_bound(i + 1, scratch_);
     const double pa = a_.phi[i], pb = b_.phi[i], ma = a_.rate[i], mb = b_.rate_before[i];
-    bound_up_[i] = interval_upper(pa, pb, ma, mb, h, M);
-    bound_down_[i] = abs_ ? interval_upper(-pa, -pb, -ma, -mb, h, M) : -kNone;
-    bound_max_ = std::max({bound_max_, bound_up_[i], bound_down_[i]});
+    const double e = a_.error.empty() ? 0.0 : std::max(a_.error[i], b_.error[i]);
+    bound_up_[i] = interval_upper(pa, pb, ma, mb, h, M, e);
+    bound_down_[i] = abs_ ? interval_upper(-pa, -pb, -ma, -mb, h, M, e) : -kNone;
+    bound_max_ = std::max({bound_max_, bound_up_[i] / ratio(i + 1), bound_down_[i] / ratio(i + 1)});
   }
   return true;
 }
@@ -125,6 +138,23 @@ double BreakScan::accel_bound(int spring, const std::vector<double>& mode_bound)
   return sum;
 }
 
+void BreakScan::mode_errors(const Probe& p, std::vector<double>& out) const {
+  out.clear();
+  if (chain_.uniform()) return;
+  out.resize(n_);
+  for (int n = 0; n < n_; ++n)
+    out[n] =
+        chain_.mode_error(n, p.tau) * (std::abs(p.x[n]) + std::abs(p.v[n]) / chain_.frequency(n));
+}
+
+double BreakScan::spring_error(int spring, const std::vector<double>& mode_error) const {
+  if (mode_error.empty()) return 0.0;
+  const double* w = chain_.phi_weights(spring);
+  double sum = 0.0;
+  for (int n = 0; n < n_; ++n) sum += std::abs(w[n]) * mode_error[n];
+  return sum;
+}
+
 void BreakScan::evaluate(int spring, const Probe& p, double& value, double& rate) const {
   const double* w = chain_.phi_weights(spring);
   double phi = 0.0, phidot = 0.0;
@@ -145,10 +175,13 @@ FirstBreak BreakScan::first(double c, double limit) {
       int spring = -1;
       for (int i = 0; i < n_; ++i)
         for (int k = 0; k < signs; ++k) {
-          const double s = k == 0 ? 1.0 : -1.0;
-          if ((k == 0 ? bound_up_[i] : bound_down_[i]) < c) continue;
-          const double t = crossing(i + 1, s, c, a_.probe, s * a_.phi[i], s * a_.rate[i], b_.probe,
-                                    s * b_.phi[i], s * b_.rate_before[i], 0, std::min(best, limit));
+          const double s = k == 0 ? 1.0 : -1.0, ci = c * ratio(i + 1);
+          if ((k == 0 ? bound_up_[i] : bound_down_[i]) < ci) continue;
+          const double ea = a_.error.empty() ? 0.0 : a_.error[i];
+          const double eb = b_.error.empty() ? 0.0 : b_.error[i];
+          const double t =
+              crossing(i + 1, s, ci, a_.probe, s * a_.phi[i], s * a_.rate[i], ea, b_.probe,
+                       s * b_.phi[i], s * b_.rate_before[i], eb, 0, std::min(best, limit));
           if (t < best) {  // strict: a tie goes to the lower spring
             best = t;
             spring = i + 1;
@@ -164,13 +197,14 @@ FirstBreak BreakScan::first(double c, double limit) {
 // The first tau in [a, b] with s phi_j >= c, or kNone; values and rates are already times s.
 // Requires pa < c (the sweep stopped at the previous crossing).
 double BreakScan::crossing(int spring, double s, double c, const Probe& a, double pa, double ma,
-                           const Probe& b, double pb, double mb, int depth, double limit) {
+                           double ea, const Probe& b, double pb, double mb, double eb, int depth,
+                           double limit) {
   if (a.tau >= limit) return kNone;
   if (pa >= c) return a.tau;
   const double h = b.tau - a.tau;
   mode_bounds(a, h, scratch_);
   const double M = accel_bound(spring, scratch_);
-  if (interval_upper(pa, pb, ma, mb, h, M) < c) return kNone;
+  if (interval_upper(pa, pb, ma, mb, h, M, std::max(ea, eb)) < c) return kNone;
   // phi' >= m0 - M (t - a) and phi' >= m1 - M (b - t): either positive throughout => rising.
   if (ma + M * h < 0.0 || mb + M * h < 0.0) return kNone;  // falling: its max is pa < c
   if (ma - M * h > 0.0 || mb - M * h > 0.0 || h < kMinWidth || depth + 1 >= kMaxDepth)
@@ -182,9 +216,11 @@ double BreakScan::crossing(int spring, double s, double c, const Probe& a, doubl
   evaluate(spring, m, pm, mm);
   pm *= s;
   mm *= s;
-  const double t = crossing(spring, s, c, a, pa, ma, m, pm, mm, depth + 1, limit);
+  mode_errors(m, error_scratch_);
+  const double em = spring_error(spring, error_scratch_);
+  const double t = crossing(spring, s, c, a, pa, ma, ea, m, pm, mm, em, depth + 1, limit);
   if (t < kNone) return t;
-  return crossing(spring, s, c, m, pm, mm, b, pb, mb, depth + 1, limit);
+  return crossing(spring, s, c, m, pm, mm, em, b, pb, mb, eb, depth + 1, limit);
 }
 
 // s phi_j - c rises through 0 once in [lo, hi]: Newton on the exact phi_j and phi_j',

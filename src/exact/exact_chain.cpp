@@ -3,7 +3,10 @@
 #include <cassert>
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <numbers>
+
+#include "exact/chain_modes.h"
 
 namespace cb {
 
@@ -40,6 +43,20 @@ void apply(const std::vector<double>& table, const std::vector<double>& x,
 ExactChain::ExactChain(int beads, double gamma, DriveDesc drive)
     : n_(beads), gamma_(gamma), terms_(detail::decompose_drive(drive)) {
   assert(beads >= 1 && gamma >= 0.0);
+  init_uniform();
+}
+
+ExactChain::ExactChain(const ChainParams& chain, DriveDesc drive)
+    : n_(chain.beads), gamma_(chain.gamma), terms_(detail::decompose_drive(drive)) {
+  assert(chain.beads >= 1 && chain.gamma >= 0.0);
+  if (chain.uniform_dynamics())
+    init_uniform();
+  else
+    init_general(chain);
+}
+
+void ExactChain::init_uniform() {
+  const int beads = n_;
   const std::size_t n = static_cast<std::size_t>(beads);
   k_.resize(n);
   omega_.resize(n);
@@ -51,7 +68,7 @@ ExactChain::ExactChain(int beads, double gamma, DriveDesc drive)
     k_[i] = (static_cast<double>(i) + 0.5) * std::numbers::pi / (beads + 0.5);
     omega_[i] = 2.0 * std::sin(0.5 * k_[i]);
     c_[i] = 4.0 / (2.0 * beads + 1.0) * std::sin(k_[i] * beads);
-    modes_.emplace_back(omega_[i], gamma);
+    modes_.emplace_back(omega_[i], gamma_);
   }
   psi_w_.resize(n * n);
   phi_w_.resize(n * n);
@@ -62,6 +79,44 @@ ExactChain::ExactChain(int beads, double gamma, DriveDesc drive)
       // sin(k j) - sin(k (j-1)) = 2 cos(k (j - 1/2)) sin(k / 2)
       phi_w_[(j - 1) * n + i] = c_[i] * 2.0 * std::cos(k_[i] * (jd - 0.5)) * std::sin(0.5 * k_[i]);
     }
+}
+
+// The modes of M^{-1/2} K M^{-1/2} (chain_modes.h): mode n is driven by s_n[N] f, and bead j
+// moves by s_n[j] per unit of mode n, so psi_w = s_n[j] s_n[N] and phi_w its difference
+// across spring j (bead 0, the wall, has s_n[0] = 0).
+void ExactChain::init_general(const ChainParams& chain) {
+  uniform_ = false;
+  const ChainModes modes = chain_modes(chain, n_);
+  const std::size_t n = static_cast<std::size_t>(n_);
+  k_.assign(n, std::numeric_limits<double>::quiet_NaN());  // no wavenumbers
+  omega_.resize(n);
+  c_.resize(n);
+  modes_.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    omega_[i] = std::sqrt(modes.omega2[i]);
+    c_[i] = modes.mode(static_cast<int>(i))[n - 1];
+    modes_.emplace_back(omega_[i], gamma_);
+  }
+  psi_w_.resize(n * n);
+  phi_w_.resize(n * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double* s = modes.mode(static_cast<int>(i));
+    for (std::size_t j = 1; j <= n; ++j) {
+      psi_w_[(j - 1) * n + i] = s[j - 1] * c_[i];
+      phi_w_[(j - 1) * n + i] = (s[j - 1] - (j > 1 ? s[j - 2] : 0.0)) * c_[i];
+    }
+  }
+  omega2_error_ = modes.omega2_error;
+  // Eigenvector angle ~ e / gap, for both factors of s_n[j] s_n[N]; plus the modal sums'
+  // rounding, N eps of sum_n |w x|.
+  weight_error_ = 2.0 * omega2_error_ / modes.min_gap +
+                  static_cast<double>(n_) * std::numeric_limits<double>::epsilon();
+}
+
+double ExactChain::mode_error(int n, double tau) const {
+  if (uniform_) return 0.0;
+  const double omega = omega_[n];
+  return weight_error_ + omega2_error_ * (1.0 / (omega * omega) + 0.5 * tau / omega);
 }
 
 double ExactChain::wavenumber(int n) const {

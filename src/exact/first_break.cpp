@@ -27,23 +27,34 @@ double scan_step(const detail::DriveTerms& terms) {
   return step;
 }
 
+// The scan's per-spring ratios r_j = phi_c,j / min_j phi_c,j (empty when every spring has the
+// same threshold, which keeps the uniform chain's sweep exactly as it was).
+std::vector<double> threshold_ratios(const ChainParams& chain) {
+  std::vector<double> ratio;
+  if (chain.uniform_thresholds()) return ratio;
+  const double least = chain.min_threshold();
+  for (int j = 1; j <= chain.beads; ++j) ratio.push_back(chain.threshold_of(j) / least);
+  return ratio;
+}
+
 }  // namespace
 
 FirstBreak exact_first_break(const ChainParams& chain, const DriveDesc& drive, double t_end) {
   if (!chain.breakable()) return {};
-  assert(chain.threshold > 0.0 && std::isfinite(t_end));
+  assert(chain.min_threshold() > 0.0 && std::isfinite(t_end));
   if (drive.type == DriveType::Expr)
     throw std::invalid_argument(
         "the exact first break needs a drive with a closed form (step, ramp, sine, impulses or "
         "table), not an expr drive: use the rk4 solver for it");
-  const ExactChain exact(chain.beads, chain.gamma, drive);
+  const ExactChain exact(chain, drive);
   // The string breaks when f itself reaches phi_c; a tie goes to the string, as in the
   // integrator, so only crossings strictly before it count.
   const double string_tau =
       chain.pull_string ? exact.drive_terms().first_time_at_least(chain.threshold) : kInf;
   const double limit = std::min(t_end, string_tau);
-  detail::BreakScan scan(exact, chain.break_on, limit, scan_step(exact.drive_terms()));
-  const FirstBreak spring = scan.first(chain.threshold, limit);
+  detail::BreakScan scan(exact, chain.break_on, limit, scan_step(exact.drive_terms()),
+                         threshold_ratios(chain));
+  const FirstBreak spring = scan.first(chain.min_threshold(), limit);
   if (spring.broke && spring.tau < string_tau) return spring;
   if (string_tau <= t_end) return {true, 0, string_tau};
   return {};
@@ -54,11 +65,23 @@ FirstBreak exact_first_break(const ChainParams& chain, const DriveDesc& drive, d
 std::vector<FirstBreak> breaking_map(int beads, double gamma, BreakMode mode,
                                      const std::vector<double>& zeta_c, double t_end,
                                      const std::atomic<bool>* stop) {
+  ChainParams chain;
+  chain.beads = beads;
+  chain.gamma = gamma;
+  chain.break_on = mode;
+  return breaking_map(chain, zeta_c, t_end, stop);
+}
+
+// A chain with unequal thresholds scales them all together: spring j breaks at
+// zeta_c phi_c,j / min_k phi_c,k.
+std::vector<FirstBreak> breaking_map(const ChainParams& chain, const std::vector<double>& zeta_c,
+                                     double t_end, const std::atomic<bool>* stop) {
   DriveDesc ramp;
   ramp.type = DriveType::Ramp;
   ramp.beta = 1.0;
-  const ExactChain exact(beads, gamma, ramp);
-  detail::BreakScan scan(exact, mode, t_end, scan_step(exact.drive_terms()));
+  const ExactChain exact(chain, ramp);
+  detail::BreakScan scan(exact, chain.break_on, t_end, scan_step(exact.drive_terms()),
+                         threshold_ratios(chain));
   std::vector<std::size_t> order(zeta_c.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::sort(order.begin(), order.end(),

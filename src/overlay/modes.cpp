@@ -37,4 +37,36 @@ void mode_amplitudes(const ChainState& state, int count, std::vector<double>& ou
   }
 }
 
+ModeBasis::ModeBasis(const ChainParams& chain, int count)
+    : count_(count), uniform_(chain.uniform_dynamics()) {
+  assert(count >= 0 && count <= chain.beads);
+  if (uniform_ || count == 0) return;
+  if (chain.beads > kModeBasisMaxBeads) {
+    count_ = 0;
+    return;
+  }
+  modes_ = chain_modes(chain, count);
+  mass_.resize(static_cast<std::size_t>(chain.beads));
+  for (int j = 1; j <= chain.beads; ++j) mass_[j - 1] = chain.mass_of(j);
+}
+
+void ModeBasis::amplitudes(const ChainState& state, std::vector<double>& out) const {
+  if (uniform_) {
+    mode_amplitudes(state, count_, out);
+    return;
+  }
+  out.assign(static_cast<std::size_t>(count_), 0.0);
+  const std::size_t n = mass_.size();
+  assert(state.psi.size() == n && state.vel.size() == n);
+  for (int m = 0; m < count_; ++m) {
+    const double* s = modes_.mode(m);
+    double a = 0.0, v = 0.0;
+    for (std::size_t j = 0; j < n; ++j) {
+      a += mass_[j] * s[j] * state.psi[j];
+      v += mass_[j] * s[j] * state.vel[j];
+    }
+    out[m] = std::sqrt(v * v + modes_.omega2[m] * a * a);
+  }
+}
+
 }  // namespace cb

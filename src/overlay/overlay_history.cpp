@@ -8,6 +8,7 @@
 #include "exact/exact_chain.h"
 #include "overlay/modes.h"
 #include "physics/energy.h"
+#include "snapshot/strain_scale.h"
 
 namespace cb {
 
@@ -42,13 +43,13 @@ int plotted_springs(int beads, int out[kPlottedSprings]) {
 
 OverlayHistory::OverlayHistory(const ChainParams& params, const DriveDesc& drive,
                                const OverlaySetup& setup)
-    : params_(params), setup_(setup) {
+    : params_(params), setup_(setup), per_spring_(strain_per_spring(params)) {
   assert(setup.tau_per_frame > 0 && setup.strain_scale > 0);
   OverlayData& d = data_;
   d.title = setup.title;
   d.beads = params.beads;
   d.gamma = params.gamma;
-  d.phi_c = params.breakable() ? params.threshold : 0.0;
+  d.phi_c = params.breakable() ? params.min_threshold() : 0.0;  // the weakest spring's
   d.tau_end = std::max(setup.tau_end, setup.tau_per_frame);
   d.tau_per_frame = setup.tau_per_frame;
   d.spring_count = plotted_springs(params.beads, d.springs);
@@ -58,9 +59,8 @@ OverlayHistory::OverlayHistory(const ChainParams& params, const DriveDesc& drive
   double lo = std::min(setup.phi_min, 0.0), hi = std::max(setup.phi_max, 0.0);
   d.threshold_both_signs = params.breakable() && params.break_on == BreakMode::Abs;
   if (params.breakable()) {
-    hi = std::max(hi, params.threshold);
-    if (d.threshold_both_signs && lo < -0.25 * params.threshold)
-      lo = std::min(lo, -params.threshold);
+    hi = std::max(hi, d.phi_c);
+    if (d.threshold_both_signs && lo < -0.25 * d.phi_c) lo = std::min(lo, -d.phi_c);
   }
   if (!(hi - lo > 0)) hi = lo + 1.0;
   const double pad = 0.06 * (hi - lo);
@@ -71,7 +71,8 @@ OverlayHistory::OverlayHistory(const ChainParams& params, const DriveDesc& drive
   d.strain_scale = setup.strain_scale;
   d.spacetime_columns = std::min(params.beads, kMaxSpacetimeColumns);
   d.exact = setup.exact && params.beads <= kExactMaxBeads;
-  if (d.exact) exact_ = std::make_unique<ExactChain>(params.beads, params.gamma, drive);
+  if (d.exact) exact_ = std::make_unique<ExactChain>(params, drive);
+  modes_ = ModeBasis(params, std::min(params.beads, kMaxModes));
 }
 
 OverlayHistory::~OverlayHistory() = default;
@@ -128,7 +129,7 @@ void OverlayHistory::record(std::int64_t frame, const ChainState& state, double 
     }
   }
 
-  mode_amplitudes(state, std::min(n, kMaxModes), d.mode_amplitude);
+  modes_.amplitudes(state, d.mode_amplitude);
   d.mode_peak.resize(d.mode_amplitude.size(), 0.0);
   for (std::size_t m = 0; m < d.mode_amplitude.size(); ++m) {
     d.mode_peak[m] = std::max(d.mode_peak[m], d.mode_amplitude[m]);
@@ -190,10 +191,14 @@ void OverlayHistory::record_spacetime(const ChainState& state) {
     for (int j = j0; j <= j1; ++j) {
       while (next < broken.size() && broken[next] < j) ++next;
       if (next < broken.size() && broken[next] == j) continue;
-      const double phi = extension(state, j);
+      // Springs with thresholds of their own: the largest phi_j / phi_c,j wins, as in the
+      // chain panel (snapshot/strain_scale.h).
+      const double phi = per_spring_
+                             ? extension(state, j) / spring_strain_scale(params_, j, d.strain_scale)
+                             : extension(state, j);
       if (std::isnan(best) || std::abs(phi) > std::abs(best)) best = phi;
     }
-    d.spacetime.push_back(static_cast<float>(best / d.strain_scale));
+    d.spacetime.push_back(static_cast<float>(per_spring_ ? best : best / d.strain_scale));
   }
 }
 

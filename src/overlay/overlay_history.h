@@ -7,7 +7,7 @@
 // frame; the exact solution of the unbroken chain (ExactChain, Eqs. (exactpsi)-(exactconv))
 // for the same springs at the frame times and kExactPerFrame - 1 times between, up to the
 // first break; a row of the space-time picture (Fig. 3(b)'s view of the strain) per frame;
-// and the normal-mode amplitudes of the current state (modes.h).
+// and the amplitudes of the chain's own normal modes in the current state (modes.h).
 #pragma once
 
 #include <cstdint>
@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "drive/drive.h"
+#include "overlay/modes.h"
 #include "overlay/overlay_data.h"
 #include "physics/chain.h"
 
@@ -62,8 +63,10 @@ class OverlayHistory {
 
   ChainParams params_;
   OverlaySetup setup_;
+  bool per_spring_ = false;  // the space-time picture shows phi_j / phi_c,j (strain_scale.h)
   OverlayData data_;
   std::unique_ptr<ExactChain> exact_;
+  ModeBasis modes_;  // the chain's own modes for the bars
   std::int64_t next_frame_ = 0;
   double last_tau_ = 0.0;
   int exact_stride_ = 1;          // exact samples (kExactPerFrame per frame) between kept ones

@@ -71,13 +71,22 @@ void draw_hud(Canvas& c) {
     // As many breaks as fit; the last line counts the rest.
     const int fit = std::max(1, static_cast<int>((box.bottom() - y - 0.3f * fs) / line));
     const int count = static_cast<int>(d.breaks.size());
+    // The first break stands out as in the chain panel: bold in the text colour behind an
+    // accent bar; the later ones are muted (the secondary text colour).
     for (int i = 0; i < count && i < fit; ++i) {
       const OverlayBreak& b = d.breaks[i];
       std::string s =
           b.spring == 0 ? std::string("pull string") : "spring " + std::to_string(b.spring);
       s += format(" at \u03C4 = %.2f", b.tau);
-      if (i == fit - 1 && count > fit) s = format("+%d more", count - i);
-      text(c, c.fonts.mono, x + 0.6f * fs, y, c.theme.marker, s, 0.0f, 0.9f);
+      const bool more = i == fit - 1 && count > fit;
+      if (more) s = format("+%d more", count - i);
+      if (i == 0 && !more) {
+        c.draw->AddRectFilled(ImVec2(x, y + 0.1f * fs), ImVec2(x + 0.3f * fs, y + 1.0f * fs),
+                              col(c.theme.accent));
+        text(c, c.fonts.bold, x + 0.6f * fs, y, c.theme.text, s, 0.0f, 0.9f);
+      } else {
+        text(c, c.fonts.mono, x + 0.6f * fs, y, c.theme.text_dim, s, 0.0f, 0.9f);
+      }
       y += line;
     }
   }
@@ -112,10 +121,19 @@ void draw_phi_plot(Canvas& c) {
     if (std::isfinite(d.exact_end)) {
       const float x = m.px(d.exact_end);
       dashed_vline(c, x, a.y, a.bottom(), col(c.theme.accent, 0.8f), 1.0f, 0.3f * fs);
-      const std::string note = format("exact lines end: first break, \u03C4 = %.2f", d.exact_end);
-      const bool left = x + text_width(c.fonts.sans, 0.8f * fs, note) + 0.5f * fs > a.right();
-      text(c, c.fonts.sans, left ? x - 0.3f * fs : x + 0.3f * fs, a.bottom() - 1.3f * fs, c.theme.text_dim,
-           note, left ? 1.0f : 0.0f, 0.8f);
+      // Right of the line, else left of it; a shorter note when neither side holds the long
+      // one, kept inside the plot so it never runs into the axis' labels.
+      std::string note = format("exact lines end: first break, \u03C4 = %.2f", d.exact_end);
+      const float pad = 0.3f * fs;
+      const auto fits = [&](const std::string& n) {
+        const float w = text_width(c.fonts.sans, 0.8f * fs, n);
+        return x + pad + w <= a.right() - pad || x - pad - w >= a.x + pad;
+      };
+      if (!fits(note)) note = format("first break, \u03C4 = %.2f", d.exact_end);
+      const float w = text_width(c.fonts.sans, 0.8f * fs, note);
+      const bool right = x + pad + w <= a.right() - pad;
+      const float left_x = right ? x + pad : std::max(a.x + pad, x - pad - w);
+      text(c, c.fonts.sans, left_x, a.bottom() - 1.3f * fs, c.theme.text_dim, note, 0.0f, 0.8f);
     }
     c.draw->PopClipRect();
     std::vector<LegendEntry> entries;

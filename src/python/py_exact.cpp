@@ -1,5 +1,6 @@
-// chainbreak.exact and chainbreak.continuum: the exact modal solution (src/exact) and the
-// continuum's Eq. (sum), evaluated at any tau, vectorised over numpy arrays of tau.
+// chainbreak.exact and chainbreak.continuum: the exact modal solution (src/exact; any linear
+// chain, unequal beads and springs through LAPACK's modes) and the continuum's Eq. (sum) (the
+// uniform chain only), evaluated at any tau, vectorised over numpy arrays of tau.
 #include <pybind11/stl.h>
 
 #include "app/run_rows.h"
@@ -32,7 +33,7 @@ py::array_t<double> over_tau(const TauArray& tau, int beads, Fill&& fill) {
 class Exact {
  public:
   explicit Exact(const Scene& source)
-      : scene_(source.resolve()), chain_(scene_.chain.beads, scene_.chain.gamma, scene_.drive) {}
+      : scene_(source.resolve()), chain_(scene_.chain, scene_.drive) {}
   py::array_t<double> phi(const TauArray& tau) const {
     return over_tau(tau, chain_.beads(),
                     [&](double t, std::vector<double>& v) { chain_.phi(t, v); });
@@ -45,7 +46,7 @@ class Exact {
     return over_tau(tau, chain_.beads(),
                     [&](double t, std::vector<double>& v) { chain_.velocity(t, v); });
   }
-  // (spring, tau) of the first spring to reach the threshold up to t_end, or None.
+  // (spring, tau) of the first spring to reach its threshold up to t_end, or None.
   py::object first_break(std::optional<double> t_end) const {
     if (!scene_.chain.breakable())
       throw SceneError(scene_.path +
@@ -99,16 +100,19 @@ class Continuum {
 void bind_exact(py::module_& m) {
   py::class_<Exact>(m, "Exact",
                     "The exact solution of the unbroken chain, Eqs. (exactpsi), (exactgreen), "
-                    "(exactconv). phi(tau), psi(tau), velocity(tau): shape tau.shape + (N,).")
+                    "(exactconv); for unequal beads and springs the modes of M^-1/2 K M^-1/2 "
+                    "(LAPACK). phi(tau), psi(tau), velocity(tau): shape tau.shape + (N,).")
       .def("phi", &Exact::phi, py::arg("tau"))
       .def("psi", &Exact::psi, py::arg("tau"))
       .def("velocity", &Exact::velocity, py::arg("tau"))
       .def("first_break", &Exact::first_break, py::arg("t_end") = py::none(),
-           "(spring, tau) of the exact first break up to t_end (default the scene's), or None")
+           "(spring, tau) of the exact first break (per-spring thresholds) up to t_end "
+           "(default the scene's), or None")
       .def_property_readonly("beads", &Exact::beads);
   m.def(
       "exact", [](const Scene& s) { return Exact(s); }, py::arg("scene"),
-      "The exact modal solution of the scene's chain (no breaking).");
+      "The exact modal solution of the scene's chain, equal or unequal beads and springs (no "
+      "breaking).");
   py::class_<Continuum>(m, "Continuum",
                         "The continuum formula Eq. (sum): phi(tau), psi(tau) (psi sums phi).")
       .def("phi", &Continuum::phi, py::arg("tau"))
@@ -116,7 +120,7 @@ void bind_exact(py::module_& m) {
       .def_property_readonly("beads", &Continuum::beads);
   m.def(
       "continuum", [](const Scene& s) { return Continuum(s); }, py::arg("scene"),
-      "The paper's large-N formula Eq. (sum) for the scene (not for impulses).");
+      "The paper's large-N formula Eq. (sum) for the scene (a uniform chain; not for impulses).");
 }
 
 }  // namespace cb::py_detail

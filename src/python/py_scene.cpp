@@ -20,6 +20,14 @@ std::string toml_value(const py::handle& value) {
   if (py::isinstance<py::int_>(value)) return py::str(value).cast<std::string>();
   if (py::isinstance<py::float_>(value)) return number_text(value.cast<double>());
   if (py::isinstance<py::str>(value)) return json_string(value.cast<std::string>());
+  // A pattern of chain.mass, chain.stiffness or chain.threshold: {"value": 4.0, "at": 15} is
+  // the inline table { value = 4.0, at = 15 } (scene.cpp's schema).
+  if (py::isinstance<py::dict>(value)) {
+    std::string out = "{ ";
+    for (const auto& [k, v] : value.cast<py::dict>())
+      out += (out.size() > 2 ? ", " : "") + py::str(k).cast<std::string>() + " = " + toml_value(v);
+    return out + " }";
+  }
   // numpy scalars are neither int_ nor float_: their item() is.
   if (py::hasattr(value, "item") && py::hasattr(value, "ndim") &&
       value.attr("ndim").cast<int>() == 0)
@@ -36,7 +44,8 @@ std::string toml_value(const py::handle& value) {
     return out + "]";
   }
   throw py::type_error("cannot write " + py::repr(value).cast<std::string>() +
-                       " as a scene value: use a number, bool, str or a list of numbers");
+                       " as a scene value: use a number, bool, str, a list (or numpy array) of "
+                       "numbers, or a dict pattern such as {'value': 4.0, 'at': 15}");
 }
 
 Scene Scene::load(const std::string& path) {
@@ -97,6 +106,9 @@ namespace {
 // "file:line:column: what" -> (file, line, column); (None, None, None) for an error that
 // names no place in a file (a --set value, an option).
 py::tuple error_place(const std::string& message) {
+  // A scene with several mistakes: the first line names the first in file order.
+  if (const auto end = message.find('\n'); end != std::string::npos)
+    return error_place(message.substr(0, end));
   for (std::size_t colon = message.find(':'); colon != std::string::npos;
        colon = message.find(':', colon + 1)) {
     std::size_t i = colon + 1, line_end = i;
@@ -113,20 +125,32 @@ py::tuple error_place(const std::string& message) {
   return py::make_tuple(py::none(), py::none(), py::none());
 }
 
+// One value per bead or spring 1..N of the resolved scene's chain, as numpy.
+py::array_t<double> per_element(const Scene& s, double (ChainParams::*of)(int) const) {
+  const SceneDesc d = s.resolve();
+  std::vector<double> values(static_cast<std::size_t>(d.chain.beads));
+  for (int j = 1; j <= d.chain.beads; ++j) values[j - 1] = (d.chain.*of)(j);
+  return to_numpy(std::move(values), {static_cast<py::ssize_t>(d.chain.beads)});
+}
+
 }  // namespace
 
 void bind_scene(py::module_& m) {
   // SceneError(ValueError): .message (the CLI's text), .file, .line, .column.
   static py::exception<SceneError> scene_error(m, "SceneError", PyExc_ValueError);
   scene_error.doc() =
-      "A mistake in a scene or an option: the message the CLI prints, with .file, .line and "
-      ".column of the offending value (None when it came from Scene.set or an option).";
+      "Mistakes in a scene or an option: the message the CLI prints (one line per mistake, in "
+      "file order), .messages (the same as a list), and .file, .line and .column of the first "
+      "(None when it came from Scene.set or an option).";
   static py::exception<OutputError> output_error(m, "OutputError", PyExc_OSError);
   py::register_exception_translator([](std::exception_ptr p) {
-    auto raise_scene_error = [](const std::string& what) {
+    auto raise_scene_error = [](const std::string& what, const std::vector<std::string>& all) {
       py::object error = py::reinterpret_borrow<py::object>(scene_error.ptr())(what);
       const py::tuple place = error_place(what);
       error.attr("message") = what;
+      py::list messages;
+      for (const std::string& m : all) messages.append(m);
+      error.attr("messages") = messages;
       error.attr("file") = place[0];
       error.attr("line") = place[1];
       error.attr("column") = place[2];
@@ -135,9 +159,9 @@ void bind_scene(py::module_& m) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const SceneError& e) {
-      raise_scene_error(e.what());
+      raise_scene_error(e.what(), e.messages());
     } catch (const DriveError& e) {
-      raise_scene_error(e.what());
+      raise_scene_error(e.what(), {e.what()});
     } catch (const OutputError& e) {
       PyErr_SetString(output_error.ptr(), e.what());
     }
@@ -163,6 +187,21 @@ void bind_scene(py::module_& m) {
                                if (!d.chain.breakable()) return py::none();
                                return py::float_(d.chain.threshold);
                              })
+      // Issue #21's chain, one value per bead or spring 1..N (ones for the paper's chain).
+      .def_property_readonly(
+          "mass", [](const Scene& s) { return per_element(s, &ChainParams::mass_of); },
+          "m_j of bead 1..N (relative to m), a numpy array.")
+      .def_property_readonly(
+          "stiffness", [](const Scene& s) { return per_element(s, &ChainParams::stiffness_of); },
+          "K_j of spring 1..N (relative to K), a numpy array.")
+      .def_property_readonly(
+          "thresholds",
+          [](const Scene& s) -> py::object {
+            if (!s.resolve().chain.breakable()) return py::none();
+            return per_element(s, &ChainParams::threshold_of);
+          },
+          "phi_c,j of spring 1..N, a numpy array (None for an unbreakable chain); `threshold` "
+          "is their smallest.")
       .def_property_readonly(
           "drive",
           [](const Scene& s) { return std::string(drive_type_name(s.resolve().drive.type)); })

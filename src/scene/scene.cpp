@@ -7,7 +7,22 @@
 //   [chain]                        # required
 //   beads = 30            # N, integer >= 1 (required)
 //   gamma = 0.0           # dimensionless friction >= 0 of Eq. (dimless); default 0
-//   threshold = 1.0       # phi_c > 0 of Eq. (break); omit for an unbreakable chain
+//   threshold = 1.0       # phi_c > 0 of Eq. (break); omit for an unbreakable chain; or
+//                         # per spring (issue #21): an array or a pattern, below
+//   mass = 1.0            # m_j > 0 relative to m, bead j (issue #21's chain); default 1
+//   stiffness = 1.0       # K_j > 0 relative to K, spring j (joining beads j-1 and j); default 1
+//     Each of mass, stiffness, threshold is a number (every bead or spring), an array of N
+//     numbers (bead or spring 1..N), or a pattern (scene_coefficients.h):
+//       { value = 4.0, at = 15 }                 one bead or spring differs from the base
+//       { value = 4.0, from = 16, to = 30 }      a segment; from and to default to 1 and N
+//       { from_value = 1.0, to_value = 2.0 }     linear from bead (spring) 1 to N
+//     over `base = ...`, every other one: default 1 for mass and stiffness, required for a
+//     threshold. Arrays of ones are the paper's uniform chain. Per-spring thresholds set the
+//     scalar `threshold` (the pull string's, the chain's scale) to their smallest value.
+//   threshold_dist = "weibull"  # issue #23: draw every spring's threshold, scale `threshold`
+//   threshold_shape = 6.0       #   (a number): Weibull modulus, or for "normal" the relative
+//   seed = 1                    #   standard deviation (truncated at zero); seed: integer >= 0.
+//                               #   Same seed, same thresholds everywhere (threshold_draw.h).
 //   break_on = "abs"      # "abs": |phi_j| >= phi_c (the paper); "stretch": phi_j >= phi_c
 //   pull_string = false   # pull through a massless string that breaks at f >= phi_c;
 //                         # requires threshold (Fig. 1, the one-ball experiment)
@@ -50,7 +65,9 @@
 // Eq. (dimless) uses tau = omega0 t, psi = y / l, f = F / (K l), gamma = Gamma / (2 m omega0)
 // with omega0 = sqrt(K / m). With input = "si" the reader converts (scene_units.h):
 //   times  dt, t_end, after_break, t0, period, impulse times, table tau column:  tau = omega0 t
-//   forces threshold, amplitude, table f column:                                f = F / (K l)
+//   forces threshold (each of an array or pattern too), amplitude, table f column:
+//                                                                               f = F / (K l)
+//   mass and stiffness arrays are relative to m and K already: read as written
 //   beta (N/s):                                  beta = b / (K l omega0)
 //   impulse strengths (N s): the integral of f dtau = omega0 / (K l) * integral of F dt,
 //                            so s = S omega0 / (K l) (bead N's kick S/m in units of l omega0)
@@ -64,9 +81,12 @@
 // and the Python module meet the same rules with the same messages.
 //
 // ==== Errors ===============================================================================
-// Every user mistake throws SceneError "file:line:column: what is wrong; how to fix it",
-// with the position of the offending value (or of its table when a key is missing), or
-// "--set KEY=VALUE: ..." when an override supplied the value.
+// Every user mistake is reported as "file:line:column: what is wrong; how to fix it", with
+// the position of the offending value (or of its table when a key is missing, 1:1 when the
+// table is missing too), or "--set KEY=VALUE: ..." when an override supplied the value. As a
+// compiler does, the reader and validate() collect every mistake (scene_problems.h) and
+// parse_scene throws one SceneError listing them, one per line, in file order (overrides'
+// after the file's). Only a TOML syntax error stops at once: the text after it is unread.
 #include "scene/scene.h"
 
 #include <toml++/toml.h>
@@ -76,12 +96,26 @@
 #include <fstream>
 #include <sstream>
 
+#include "scene/scene_problems.h"
 #include "scene/scene_reader.h"
 #include "scene/scene_sections.h"
 #include "scene/scene_units.h"
 #include "scene/toml_guard.h"
 
 namespace cb {
+
+namespace {
+
+std::string joined(const std::vector<std::string>& lines) {
+  std::string out;
+  for (const std::string& line : lines) out += (out.empty() ? "" : "\n") + line;
+  return out;
+}
+
+}  // namespace
+
+SceneError::SceneError(const std::vector<std::string>& messages)
+    : std::runtime_error(joined(messages)), messages_(messages) {}
 
 namespace {
 
@@ -140,6 +174,8 @@ SceneDesc parse_scene(const std::string& text, const std::string& path,
                      "; check the syntax there: strings need double quotes (type = \"ramp\"), "
                      "sections are [name], arrays are [1, 2]");
   }
+  // Every mistake is noted and reading goes on (scene_problems.h): all of them are thrown
+  // together at the end, in file order.
   scene_detail::SceneReader r(path, std::move(root));
   for (const Override& o : overrides) r.apply(o);
   r.check_known_keys();
@@ -152,12 +188,13 @@ SceneDesc parse_scene(const std::string& text, const std::string& path,
   // Units first: they decide how every other number is read.
   d.units = scene_detail::read_units(r);
   const scene_detail::Conversion c = scene_detail::conversion_for(d.units);
-  d.chain = scene_detail::read_chain(r, d.units, c);
+  d.chain = scene_detail::read_chain(r, d.units, c, d.threshold_draw);
   d.drive = scene_detail::read_drive(r, c, file.parent_path().string());
   d.integrator = scene_detail::read_integrator(r, c);
   d.render = read_render(r);
   d.origins = r.origins();
-  validate(d);
+  scene_detail::check_values(d, r.problems());
+  r.problems().throw_if_any();
   return d;
 }
 

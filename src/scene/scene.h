@@ -4,6 +4,7 @@
 // can make is reported as "file:line:column: what is wrong, and how to fix it".
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <optional>
@@ -73,11 +74,21 @@ struct RenderDesc {
 // Python module): messages then start at the key's name.
 using KeyOrigins = std::map<std::string, std::string, std::less<>>;
 
+// chain.threshold_dist, chain.threshold_shape, chain.seed as the scene gave them (issue #23):
+// the scene writer writes these three lines back instead of N drawn numbers.
+struct ThresholdDraw {
+  std::string dist;    // "weibull" or "normal"
+  double scale = 1.0;  // chain.threshold, dimensionless
+  double shape = 1.0;
+  std::int64_t seed = 0;
+};
+
 struct SceneDesc {
   std::string path;  // as given
   std::string name;  // file stem, used for output names
   std::string title;
   ChainParams chain;
+  std::optional<ThresholdDraw> threshold_draw;  // how chain.thresholds were drawn, if they were
   DriveDesc drive;
   IntegratorDesc integrator;
   std::optional<Units> units;
@@ -85,22 +96,33 @@ struct SceneDesc {
   KeyOrigins origins;
 };
 
+// Every mistake of a scene, in file order: what() holds one message per line, messages()
+// the same list. A scene with one mistake gives exactly that one message.
 struct SceneError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+  explicit SceneError(const std::string& message)
+      : std::runtime_error(message), messages_{message} {}
+  explicit SceneError(const std::vector<std::string>& messages);
+  const std::vector<std::string>& messages() const { return messages_; }
+
+ private:
+  std::vector<std::string> messages_;
 };
 
 // The one check of a scene's values, apart from parsing: units, ranges, RK4's stability limit,
-// drive limits, the [render] settings. The TOML reader, --set, sweep's values, the viewer's
-// edits and the Python module all call it on the in-memory (dimensionless) scene. Throws
-// SceneError "<where the key came from>: <what is wrong>; <how to fix it>", numbers shown in
-// the scene's own units (seconds and newtons for input = "si").
+// drive limits, the chain's arrays, the [render] settings. The TOML reader, --set, sweep's
+// values, the viewer's edits and the Python module all call it on the in-memory
+// (dimensionless) scene. Throws SceneError with every problem found, each
+// "<where the key came from>: <what is wrong>; <how to fix it>", numbers shown in the scene's
+// own units (seconds and newtons for input = "si").
 void validate(const SceneDesc& scene);
 
 // Sets one numeric key as a scene file would give it (in the scene's units, converted to
 // Eq. (dimless) form), records `origin` as where the value came from, and validates the
 // result. Returns false, changing nothing, for a key this cannot set in memory ([units] keys
-// change how every other number is read; strings and arrays are not numbers): the caller
-// then re-reads the scene text with an Override. Throws SceneError for a bad value.
+// change how every other number is read; strings and arrays are not numbers; chain.mass,
+// chain.stiffness, and chain.beads or chain.threshold of a chain with arrays, are patterns
+// expanded for N by the reader): the caller then re-reads the scene text with an Override.
+// Throws SceneError for a bad value.
 bool set_scene_number(SceneDesc& scene, const std::string& key, double value,
                       const std::string& origin);
 // Several keys at once, validated once they are all set (a grid point of `sweep`).

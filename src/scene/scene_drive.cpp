@@ -19,8 +19,11 @@ std::string needs(const char* type, const char* what) {
 
 void read_impulses(const SceneReader& r, const Conversion& c, DriveDesc& d) {
   const auto times = r.numbers("drive", "times");
-  if (!times) r.fail_missing("drive", "times", needs("impulses", "the kick times"));
   const auto strengths = r.numbers("drive", "strengths");
+  if (!times) {
+    r.fail_missing("drive", "times", needs("impulses", "the kick times"));
+    return;
+  }
   for (double t : *times) d.times.push_back(c.time(t));
   // Kicks default to strength 1 in the scene's units (1 N s for SI input), so with SI input
   // the converted defaults are written out. validate() checks the counts agree.
@@ -35,19 +38,26 @@ void read_impulses(const SceneReader& r, const Conversion& c, DriveDesc& d) {
 void read_table_rows(const SceneReader& r, const std::string& scene_dir, DriveDesc& d) {
   const auto points = r.numbers("drive", "points");
   const auto file = r.string("drive", "file");
-  if (points && file)
+  if (points && file) {
     r.fail("drive", "points", "give the table either as drive.file or as drive.points, not both");
-  if (points) {
-    if (points->size() < 4 || points->size() % 2 != 0)
+    return;
+  }
+  if (points || r.failed("drive", "points")) {
+    if (!points) return;
+    if (points->size() < 4 || points->size() % 2 != 0) {
       r.fail("drive", "points",
              "drive.points holds tau, f pairs: an even count of numbers, at least two pairs, "
              "e.g. points = [0.0, 0.0, 50.0, 1.0]");
+      return;
+    }
     // validate() checks that tau increases.
     for (std::size_t i = 0; i < points->size(); i += 2)
       d.table.emplace_back((*points)[i], (*points)[i + 1]);
     return;
   }
-  d.table_file = r.require_string("drive", "file", needs("table", "a CSV file of tau,f rows"));
+  const auto given = r.require_string("drive", "file", needs("table", "a CSV file of tau,f rows"));
+  if (!given) return;
+  d.table_file = *given;
   // Relative to the scene file, so a scene and its data move together.
   const std::filesystem::path path =
       std::filesystem::path(scene_dir) / std::filesystem::path(d.table_file);
@@ -56,6 +66,7 @@ void read_table_rows(const SceneReader& r, const std::string& scene_dir, DriveDe
   } catch (const DriveError& e) {
     // The DriveError names the resolved path, the row and what to fix.
     r.fail("drive", "file", "cannot use drive.file = \"" + d.table_file + "\": " + e.what());
+    d.table.clear();
   }
 }
 
@@ -69,13 +80,16 @@ void read_table(const SceneReader& r, const Conversion& c, const std::string& sc
 }
 
 void read_expr(const SceneReader& r, const Conversion& c, DriveDesc& d) {
-  d.expr = r.require_string("drive", "expr", needs("expr", "an expression in t"));
+  const auto expr = r.require_string("drive", "expr", needs("expr", "an expression in t"));
+  if (!expr) return;
+  d.expr = *expr;
   if (!c.si) return;  // validate() compiles it
   // Compiled as the user wrote it first, so that muParser's message quotes their text.
   try {
     make_forcing(d);
   } catch (const DriveError& e) {
     r.fail("drive", "expr", std::string(e.what()));
+    return;
   }
   d.expr = expr_to_dimensionless(d.expr, c);
 }
@@ -84,11 +98,13 @@ void read_expr(const SceneReader& r, const Conversion& c, DriveDesc& d) {
 
 DriveDesc read_drive(const SceneReader& r, const Conversion& c, const std::string& scene_dir) {
   DriveDesc d;
-  const std::string type =
+  const auto type =
       r.require_string("drive", "type", "(one of step, ramp, sine, impulses, table, expr)");
-  if (!parse_drive_type(type, d.type))
+  if (type && !parse_drive_type(*type, d.type))
     r.fail("drive", "type",
-           "unknown drive type '" + type + "'; " + suggest(type, kDriveTypes, "\"", "\""));
+           "unknown drive type '" + *type + "'; " + suggest(*type, kDriveTypes, "\"", "\""));
+  // Without a type the required keys are unknown: type-check what is there, require nothing.
+  const bool typed = type && !r.failed("drive", "type");
 
   // Read (and so type-check) every key up front, required or not.
   const auto amplitude = r.number("drive", "amplitude");
@@ -97,20 +113,33 @@ DriveDesc read_drive(const SceneReader& r, const Conversion& c, const std::strin
   const auto t0 = r.number("drive", "t0");
   if (period) d.period = c.time(*period);  // checked by validate() whatever the type
   d.t0 = c.time(t0.value_or(0.0));
+  // Keys of other drive types are type-checked here but otherwise ignored (a problem is noted
+  // once, so reading them again below says nothing new).
+  r.numbers("drive", "times");
+  r.numbers("drive", "strengths");
+  r.string("drive", "file");
+  r.numbers("drive", "points");
+  r.string("drive", "expr");
 
+  if (!typed) {
+    // A stand-in that validate() needs nothing more for; the type's problem is noted.
+    d.type = DriveType::Step;
+    d.amplitude = 0.0;
+    return d;
+  }
   switch (d.type) {
     case DriveType::Step:
       if (!amplitude) r.fail_missing("drive", "amplitude", needs("step", "the step's height"));
-      d.amplitude = c.force(*amplitude);
+      if (amplitude) d.amplitude = c.force(*amplitude);
       break;
     case DriveType::Ramp:
       if (!beta) r.fail_missing("drive", "beta", needs("ramp", "the slope of f = beta tau"));
-      d.beta = c.slope(*beta);
+      if (beta) d.beta = c.slope(*beta);
       break;
     case DriveType::Sine:
       if (!amplitude) r.fail_missing("drive", "amplitude", needs("sine", "the amplitude"));
       if (!period) r.fail_missing("drive", "period", needs("sine", "the period"));
-      d.amplitude = c.force(*amplitude);
+      if (amplitude) d.amplitude = c.force(*amplitude);
       break;
     case DriveType::Impulses:
       read_impulses(r, c, d);
@@ -122,12 +151,6 @@ DriveDesc read_drive(const SceneReader& r, const Conversion& c, const std::strin
       read_expr(r, c, d);
       break;
   }
-  // Keys of other drive types are type-checked above but otherwise ignored.
-  r.numbers("drive", "times");
-  r.numbers("drive", "strengths");
-  r.string("drive", "file");
-  r.numbers("drive", "points");
-  r.string("drive", "expr");
   return d;
 }
 

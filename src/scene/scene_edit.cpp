@@ -65,6 +65,14 @@ namespace {
 bool assign_number(SceneDesc& next, const std::string& key, double value,
                    const std::string& origin) {
   const scene_detail::Conversion c = scene_detail::conversion_for(next.units);
+  // The chain's arrays were expanded for its N, and the thresholds' scale is their smallest:
+  // a new N or threshold re-reads the text, where each pattern expands anew (or an explicit
+  // array is refused for its length).
+  const ChainParams& chain = next.chain;
+  if ((key == "chain.beads" &&
+       !(chain.mass.empty() && chain.stiffness.empty() && chain.thresholds.empty())) ||
+      (key == "chain.threshold" && !chain.thresholds.empty()))
+    return false;
   if (key == "chain.beads") {
     next.chain.beads = whole(key, value, origin);
   } else if (key == "render.width") {

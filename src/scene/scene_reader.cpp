@@ -26,7 +26,12 @@ constexpr KeySpec kSchema[] = {
     {"", "title", Kind::String, "title = \"Anomalous breaking\""},
     {"chain", "beads", Kind::Integer, "beads = 30"},
     {"chain", "gamma", Kind::Number, "gamma = 0.0"},
-    {"chain", "threshold", Kind::Number, "threshold = 1.0"},
+    {"chain", "threshold", Kind::Coefficients, "threshold = 1.0"},
+    {"chain", "mass", Kind::Coefficients, "mass = { value = 4.0, at = 15 }"},
+    {"chain", "stiffness", Kind::Coefficients, "stiffness = { value = 4.0, from = 1, to = 15 }"},
+    {"chain", "threshold_dist", Kind::String, "threshold_dist = \"weibull\""},
+    {"chain", "threshold_shape", Kind::Number, "threshold_shape = 6.0"},
+    {"chain", "seed", Kind::Integer, "seed = 1"},
     {"chain", "break_on", Kind::String, "break_on = \"abs\""},
     {"chain", "pull_string", Kind::Bool, "pull_string = false"},
     {"drive", "type", Kind::String, "type = \"ramp\""},
@@ -114,6 +119,8 @@ const char* kind_name(Kind kind) {
       return "a string";
     case Kind::NumberArray:
       return "an array of numbers";
+    case Kind::Coefficients:
+      return "a number, an array of numbers or a pattern table";
   }
   return "a value";
 }
@@ -139,11 +146,11 @@ std::string describe(const toml::node& n) {
   return text.str();
 }
 
+}  // namespace
+
 std::string dotted(std::string_view section, std::string_view key) {
   return section.empty() ? std::string(key) : std::string(section) + "." + std::string(key);
 }
-
-}  // namespace
 
 const KeySpec* find_key_spec(std::string_view section, std::string_view key) {
   for (const KeySpec& k : kSchema)
@@ -231,11 +238,23 @@ KeyOrigins SceneReader::origins() const {
 
 void SceneReader::fail(std::string_view section, std::string_view key,
                        const std::string& what) const {
-  throw SceneError(where(section, key) + ": " + what);
+  problems_.add(dotted(section, key), where(section, key), what);
+}
+
+void SceneReader::fail_at(std::string_view key, const toml::source_region& at,
+                          const std::string& what) const {
+  // A value from --set has no position of its own: name the override.
+  const auto origin = origin_.find(key);
+  problems_.add(key, origin != origin_.end() ? origin->second : position(at), what);
+}
+
+bool SceneReader::failed(std::string_view section, std::string_view key) const {
+  return problems_.failed(key.empty() ? std::string(section) : dotted(section, key));
 }
 
 void SceneReader::fail_missing(std::string_view section, std::string_view key,
                                const std::string& why) const {
+  if (has(section, key) || failed(section)) return;  // present but wrong: noted already
   const KeySpec* spec = find_key_spec(section, key);
   std::string what = "missing key '" + std::string(key) + "' in [" + std::string(section) + "]";
   if (!why.empty()) what += " " + why;
@@ -257,8 +276,20 @@ void SceneReader::fail_type(std::string_view section, std::string_view key, cons
 
 void SceneReader::apply(const Override& o) {
   const std::string text = "--set " + o.key + "=" + o.value;
-  auto fail_here = [&](const std::string& what) { throw SceneError(text + ": " + what); };
+  // Each refused override is one problem; the file is still read for its own.
+  struct Refused {};
+  auto fail_here = [&](const std::string& what) {
+    problems_.add({}, text, what);
+    throw Refused{};
+  };
+  try {
+    apply_checked(o, text, fail_here);
+  } catch (const Refused&) {
+  }
+}
 
+template <class Fail>
+void SceneReader::apply_checked(const Override& o, const std::string& text, Fail&& fail_here) {
   const std::size_t dot = o.key.find('.');
   const std::string section = dot == std::string::npos ? "" : o.key.substr(0, dot);
   const std::string key = dot == std::string::npos ? o.key : o.key.substr(dot + 1);
@@ -298,9 +329,12 @@ void SceneReader::apply(const Override& o) {
   if (!section.empty()) {
     if (!root_.contains(section)) root_.insert(section, toml::table{});
     table = root_.get_as<toml::table>(section);
-    if (!table)
-      throw SceneError(position(root_.get(section)->source()) + ": [" + section +
-                       "] must be a table (a [" + section + "] header followed by its keys)");
+    if (!table) {
+      problems_.add(
+          section, position(root_.get(section)->source()),
+          "[" + section + "] must be a table (a [" + section + "] header followed by its keys)");
+      return;
+    }
   }
   if (as_text)
     table->insert_or_assign(key, o.value);
@@ -309,15 +343,11 @@ void SceneReader::apply(const Override& o) {
   origin_[dotted(section, key)] = text;
 }
 
-void SceneReader::check_known_keys() const {
-  // Report the first problem in file order, as a compiler would.
-  std::optional<toml::source_position> first;
-  std::string message;
+void SceneReader::check_known_keys() {
+  // Every unknown name is noted (sorted into file order with the rest later); a section that
+  // is not a table counts as failed, so that its keys are not reported missing as well.
   auto note = [&](const toml::source_region& at, std::string what) {
-    if (!first || at.begin < *first) {
-      first = at.begin;
-      message = position(at) + ": " + what;
-    }
+    problems_.add({}, position(at), what);
   };
   for (auto&& [name, value] : root_) {
     const std::string key(name.str());
@@ -325,8 +355,9 @@ void SceneReader::check_known_keys() const {
     if (is_section(key)) {
       const toml::table* table = value.as_table();
       if (!table) {
-        note(value.source(), "[" + key + "] must be a table, got " + describe(value) +
-                                 "; write a [" + key + "] header followed by its keys");
+        problems_.add(key, position(value.source()),
+                      "[" + key + "] must be a table, got " + describe(value) + "; write a [" +
+                          key + "] header followed by its keys");
         continue;
       }
       for (auto&& [inner, inner_value] : *table) {
@@ -351,7 +382,6 @@ void SceneReader::check_known_keys() const {
                               " (everything else goes in a [section])");
     }
   }
-  if (first) throw SceneError(message);
 }
 
 bool SceneReader::has_section(std::string_view section) const {
@@ -367,11 +397,16 @@ std::optional<double> SceneReader::number(std::string_view section, std::string_
   if (!n) return std::nullopt;
   if (auto i = n->value_exact<std::int64_t>()) return static_cast<double>(*i);
   const auto f = n->value_exact<double>();
-  if (!f) fail_type(section, key, *n, kind_name(Kind::Number));
-  if (!std::isfinite(*f))
+  if (!f) {
+    fail_type(section, key, *n, kind_name(Kind::Number));
+    return std::nullopt;
+  }
+  if (!std::isfinite(*f)) {
     fail(section, key,
          dotted(section, key) + " must be a finite number, got " + format_exact(*f) +
              "; write e.g. " + std::string(find_key_spec(section, key)->example));
+    return std::nullopt;
+  }
   return *f;
 }
 
@@ -381,7 +416,7 @@ std::optional<std::int64_t> SceneReader::integer(std::string_view section,
   if (!n) return std::nullopt;
   const auto i = n->value_exact<std::int64_t>();
   if (!i) fail_type(section, key, *n, "an integer (a whole number, no decimal point)");
-  return *i;
+  return i;
 }
 
 std::optional<bool> SceneReader::boolean(std::string_view section, std::string_view key) const {
@@ -389,16 +424,16 @@ std::optional<bool> SceneReader::boolean(std::string_view section, std::string_v
   if (!n) return std::nullopt;
   const auto b = n->value_exact<bool>();
   if (!b) fail_type(section, key, *n, kind_name(Kind::Bool));
-  return *b;
+  return b;
 }
 
 std::optional<std::string> SceneReader::string(std::string_view section,
                                                std::string_view key) const {
   const toml::node* n = node(section, key);
   if (!n) return std::nullopt;
-  const auto s = n->value_exact<std::string>();
+  auto s = n->value_exact<std::string>();
   if (!s) fail_type(section, key, *n, kind_name(Kind::String));
-  return *s;
+  return s;
 }
 
 std::optional<std::vector<double>> SceneReader::numbers(std::string_view section,
@@ -406,34 +441,40 @@ std::optional<std::vector<double>> SceneReader::numbers(std::string_view section
   const toml::node* n = node(section, key);
   if (!n) return std::nullopt;
   const toml::array* array = n->as_array();
-  if (!array) fail_type(section, key, *n, kind_name(Kind::NumberArray));
+  if (!array) {
+    fail_type(section, key, *n, kind_name(Kind::NumberArray));
+    return std::nullopt;
+  }
   std::vector<double> out;
   for (std::size_t i = 0; i < array->size(); ++i) {
     const toml::node& e = *array->get(i);
     std::optional<double> v;
     if (auto k = e.value_exact<std::int64_t>()) v = static_cast<double>(*k);
     if (auto f = e.value_exact<double>(); f && std::isfinite(*f)) v = *f;
-    if (!v)
+    if (!v) {
       fail(section, key,
            dotted(section, key) + "[" + std::to_string(i) + "] must be a finite number, got " +
                describe(e) + "; write e.g. " + std::string(find_key_spec(section, key)->example));
+      return std::nullopt;
+    }
     out.push_back(*v);
   }
   return out;
 }
 
-double SceneReader::require_number(std::string_view section, std::string_view key,
-                                   const std::string& why) const {
+std::optional<double> SceneReader::require_number(std::string_view section, std::string_view key,
+                                                  const std::string& why) const {
   const auto v = number(section, key);
   if (!v) fail_missing(section, key, why);
-  return *v;
+  return v;
 }
 
-std::string SceneReader::require_string(std::string_view section, std::string_view key,
-                                        const std::string& why) const {
+std::optional<std::string> SceneReader::require_string(std::string_view section,
+                                                       std::string_view key,
+                                                       const std::string& why) const {
   auto v = string(section, key);
   if (!v) fail_missing(section, key, why);
-  return *v;
+  return v;
 }
 
 }  // namespace cb::scene_detail

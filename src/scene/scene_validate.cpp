@@ -8,12 +8,19 @@
 // newtons. A message starts at where the value came from (SceneDesc::origins): the key's
 // position in the file, the --set that gave it, or, for a key left at its default, its
 // section.
+//
+// Every problem is noted (scene_problems.h), not thrown at the first: a check whose key, or
+// a key it depends on, already has a problem stays silent, since its value is then a
+// stand-in.
 #include <cmath>
 #include <cstdio>
 
 #include "physics/integrator.h"
 #include "scene/scene.h"
+#include "scene/scene_coefficients.h"
+#include "scene/scene_problems.h"
 #include "scene/scene_reader.h"
+#include "scene/scene_sections.h"
 #include "scene/scene_units.h"
 #include "scene/zoom_spec.h"
 
@@ -38,13 +45,21 @@ double round_value_below(double v) {
   return p;
 }
 
+// RK4's stability limit for this chain.
+// TODO(issue #21, helper k21): call rk4_stability_limit(chain) of physics/integrator.h, which
+// bounds the fastest mode with the chain's masses and stiffness, once it is on main; this
+// uniform-chain bound is too large for a chain stiffer or lighter than 1 somewhere.
+double stability_limit(const ChainParams& chain) {
+  return rk4_stability_limit(chain.beads, chain.gamma);
+}
+
 // What kind of quantity a number is, for showing it in the scene's units.
 enum class Quantity { Plain, Time, Force, Slope, Impulse };
 
 class Checker {
  public:
-  explicit Checker(const SceneDesc& scene)
-      : scene_(scene), c_(scene_detail::conversion_for(scene.units)) {}
+  Checker(const SceneDesc& scene, scene_detail::Problems& problems)
+      : scene_(scene), c_(scene_detail::conversion_for(scene.units)), problems_(problems) {}
 
   // "section.key" -> where its value came from, or its section's start for a default.
   std::string where(const std::string& key) const {
@@ -58,9 +73,15 @@ class Checker {
     return scene_.origins.empty() || scene_.origins.count(key) > 0;
   }
 
-  [[noreturn]] void fail(const std::string& key, const std::string& what) const {
-    const std::string at = where(key);
-    throw SceneError(at.empty() ? what : at + ": " + what);
+  // Notes a problem of `key` (once: a key with a problem already says nothing more).
+  void fail(const std::string& key, const std::string& what) const {
+    problems_.add(key, where(key), what);
+  }
+  // Some key has a problem, so checks that read it would judge a stand-in.
+  bool failed(std::initializer_list<const char*> keys) const {
+    for (const char* key : keys)
+      if (problems_.failed(key)) return true;
+    return false;
   }
 
   // A dimensionless value as the scene gave it: exact without unit conversion, 6 digits
@@ -106,8 +127,10 @@ class Checker {
     return spec ? spec->example : std::string_view(key);
   }
 
-  void units() const;
+  bool units() const;  // false when a unit is wrong (then converted numbers are not meaningful)
   void chain() const;
+  void coefficients(const std::string& key, const char* element, const char* what,
+                    const std::vector<double>& values, Quantity q) const;
   void drive() const;
   void integrator() const;
   void render() const;
@@ -115,10 +138,11 @@ class Checker {
  private:
   const SceneDesc& scene_;
   scene_detail::Conversion c_;
+  scene_detail::Problems& problems_;
 };
 
-void Checker::units() const {
-  if (!scene_.units) return;
+bool Checker::units() const {
+  if (!scene_.units) return true;
   const Units& u = *scene_.units;
   const std::pair<const char*, double> positive[] = {
       {"mass", u.mass}, {"stiffness", u.stiffness}, {"length", u.length}};
@@ -133,6 +157,8 @@ void Checker::units() const {
   if (given("units.friction") && (!(u.friction >= 0.0) || !std::isfinite(u.friction)))
     fail("units.friction", "units.friction must be >= 0 (in kg/s), got " +
                                format_exact(u.friction) + "; write e.g. friction = 0.0");
+  return !failed({"units"}) && !failed({"units.mass", "units.stiffness", "units.length",
+                                        "units.friction", "units.input"});
 }
 
 void Checker::chain() const {
@@ -145,8 +171,12 @@ void Checker::chain() const {
     fail("chain.gamma", "chain.gamma must be >= 0 (friction only removes energy), got " +
                             format_exact(p.gamma) +
                             "; write e.g. gamma = 0.01, or gamma = 0 for none");
-  // Infinity is how ChainParams says "unbreakable"; NaN is never a threshold.
-  if (std::isnan(p.threshold) || (p.breakable() && !(p.threshold > 0.0)))
+  coefficients("chain.mass", "bead", "mass", p.mass, Quantity::Plain);
+  coefficients("chain.stiffness", "spring", "stiffness", p.stiffness, Quantity::Plain);
+  coefficients("chain.threshold", "spring", "threshold", p.thresholds, Quantity::Force);
+  // Infinity is how ChainParams says "unbreakable"; NaN is never a threshold. (With an array
+  // of thresholds, `threshold` is their smallest, checked above.)
+  if (std::isnan(p.threshold) || (p.thresholds.empty() && p.breakable() && !(p.threshold > 0.0)))
     fail("chain.threshold", "chain.threshold must be > 0, got " +
                                 shown(p.threshold, Quantity::Force) +
                                 "; write e.g. threshold = 1.0, or remove it for an unbreakable "
@@ -155,6 +185,28 @@ void Checker::chain() const {
     fail("chain.pull_string",
          "chain.pull_string = true needs chain.threshold (the string breaks when f reaches "
          "it); add e.g. threshold = 1.0 to [chain], or set pull_string = false");
+}
+
+// An array of the chain: one value per bead or spring, each finite and > 0.
+void Checker::coefficients(const std::string& key, const char* element, const char* what,
+                           const std::vector<double>& values, Quantity q) const {
+  if (values.empty()) return;
+  const std::string k = key.substr(key.find('.') + 1);
+  if (values.size() != static_cast<std::size_t>(scene_.chain.beads)) {
+    if (!failed({"chain.beads"}))
+      fail(key, scene_detail::length_problem(k, element, values.size(), scene_.chain.beads));
+    return;
+  }
+  for (std::size_t j = 0; j < values.size(); ++j) {
+    if (values[j] > 0.0 && std::isfinite(values[j])) continue;
+    fail(key,
+         key + " of " + element + " " + std::to_string(j + 1) + " is " + shown(values[j], q) +
+             "; every " + what + " must be a finite number > 0" +
+             (q == Quantity::Plain ? std::string(" (relative to ") + (k == "mass" ? "m" : "K") + ")"
+                                   : std::string()) +
+             ", e.g. " + std::string(example(key)));
+    return;
+  }
 }
 
 void Checker::drive() const {
@@ -172,6 +224,7 @@ void Checker::drive() const {
                          shown(d.t0, Quantity::Time) + "; write e.g. t0 = 0.0");
   switch (d.type) {
     case DriveType::Impulses:
+      if (failed({"drive.times"})) break;
       if (d.times.empty())
         fail("drive.times",
              "drive.times is empty; give at least one kick time, e.g. times = [0.0, 30.0]");
@@ -193,6 +246,7 @@ void Checker::drive() const {
       break;
     case DriveType::Table: {
       const std::string key = d.table_file.empty() ? "drive.points" : "drive.file";
+      if (failed({"drive.points", "drive.file"})) break;  // the reader said what is wrong
       if (d.table.size() < 2)
         fail(key,
              "the drive table needs at least two (tau, f) points, e.g. points = [0.0, 0.0, "
@@ -240,14 +294,16 @@ void Checker::integrator() const {
                                        "; write e.g. after_break = 20.0, or remove it to run "
                                        "until t_end");
 
+  if (failed({"integrator.dt"})) return;
   const bool dt_given = given("integrator.dt");
-  if (d.t_end / d.dt > kMaxRunSteps)
+  if (!failed({"integrator.t_end"}) && d.t_end / d.dt > kMaxRunSteps)
     fail(dt_given ? "integrator.dt" : "integrator.t_end",
          "integrator.t_end / dt = " + format_approx(d.t_end / d.dt) + " steps is more than " +
              format_approx(kMaxRunSteps) + "; raise dt (e.g. dt = 0.01) or lower t_end");
 
   // Beyond this dt RK4 amplifies the fastest mode every step and the run blows up.
-  const double limit = rk4_stability_limit(chain.beads, chain.gamma);
+  if (failed({"chain", "chain.beads", "chain.gamma", "chain.mass", "chain.stiffness"})) return;
+  const double limit = stability_limit(chain);
   if (d.dt <= limit) return;
   const double limit_in_scene = limit / c_.omega0;  // seconds for SI input
   std::string what;
@@ -310,6 +366,7 @@ void Checker::render() const {
   if (!(d.title_card >= 0.0 && d.title_card <= 60.0))
     fail("render.title_card", "render.title_card = " + format_exact(d.title_card) +
                                   " must be 0 to 60 seconds, e.g. title_card = 3");
+  if (failed({"chain.beads"})) return;
   try {  // the springs of a fixed zoom must exist in this chain
     parse_zoom(d.zoom, scene_.chain.beads, "render.zoom =");
   } catch (const SceneError& e) {
@@ -319,14 +376,26 @@ void Checker::render() const {
 
 }  // namespace
 
-void validate(const SceneDesc& scene) {
-  // Section by section in the order of the schema, so the first mistake is the one reported.
-  const Checker check(scene);
-  check.units();
+namespace scene_detail {
+
+void check_values(const SceneDesc& scene, Problems& problems) {
+  // Section by section in the order of the schema (the order of an in-memory scene's
+  // messages; a file's are sorted by position).
+  const Checker check(scene, problems);
+  // Wrong units make every converted number meaningless: say only what is wrong with them.
+  if (!check.units() && scene.units && scene.units->si_input) return;
   check.chain();
   check.drive();
   check.integrator();
   check.render();
+}
+
+}  // namespace scene_detail
+
+void validate(const SceneDesc& scene) {
+  scene_detail::Problems problems;
+  scene_detail::check_values(scene, problems);
+  problems.throw_if_any();
 }
 
 }  // namespace cb

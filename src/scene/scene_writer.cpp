@@ -4,7 +4,9 @@
 #include <filesystem>
 #include <sstream>
 
+#include "scene/scene_coefficients.h"
 #include "scene/scene_reader.h"
+#include "scene/threshold_draw.h"
 
 namespace cb {
 
@@ -42,6 +44,12 @@ std::string numbers(const std::vector<double>& values) {
   std::string out = "[";
   for (std::size_t i = 0; i < values.size(); ++i) out += (i ? ", " : "") + number(values[i]);
   return out + "]";
+}
+
+std::vector<double> drawn(const ThresholdDraw& t, int beads) {
+  return scene_detail::draw_thresholds(t.dist == "normal" ? scene_detail::ThresholdDist::Normal
+                                                          : scene_detail::ThresholdDist::Weibull,
+                                       t.scale, t.shape, static_cast<std::uint64_t>(t.seed), beads);
 }
 
 void write_drive(std::ostringstream& out, const SceneDesc& scene) {
@@ -93,7 +101,21 @@ std::string write_scene(const SceneDesc& scene) {
 
   const ChainParams& c = scene.chain;
   out << "\n[chain]\nbeads = " << c.beads << "\ngamma = " << number(c.gamma) << "\n";
-  if (c.breakable()) out << "threshold = " << number(c.threshold) << "\n";
+  // The arrays in their shortest exact form (scene_coefficients.h): a pattern written by a
+  // pattern stays one line.
+  if (!c.mass.empty())
+    out << "mass = " << scene_detail::coefficients_text(c.mass, 1.0, number) << "\n";
+  if (!c.stiffness.empty())
+    out << "stiffness = " << scene_detail::coefficients_text(c.stiffness, 1.0, number) << "\n";
+  if (scene.threshold_draw && c.thresholds == drawn(*scene.threshold_draw, c.beads)) {
+    // Drawn thresholds: the three keys that draw them again, not N numbers.
+    const ThresholdDraw& t = *scene.threshold_draw;
+    out << "threshold = " << number(t.scale) << "\nthreshold_dist = " << quoted(t.dist)
+        << "\nthreshold_shape = " << number(t.shape) << "\nseed = " << t.seed << "\n";
+  } else if (!c.thresholds.empty())
+    out << "threshold = " << scene_detail::coefficients_text(c.thresholds, {}, number) << "\n";
+  else if (c.breakable())
+    out << "threshold = " << number(c.threshold) << "\n";
   out << "break_on = " << quoted(c.break_on == BreakMode::Abs ? "abs" : "stretch") << "\n";
   out << "pull_string = " << (c.pull_string ? "true" : "false") << "\n";
 

@@ -10,7 +10,9 @@
 #include <cstdio>
 #include <limits>
 
+#include "snapshot/break_labels.h"
 #include "snapshot/snapshot_internal.h"
+#include "text/font.h"
 
 namespace cb::snapshot_detail {
 
@@ -42,12 +44,15 @@ float f(double v) {
   return static_cast<float>(v);
 }
 
-std::string break_text(const BreakEvent& b) {
+// The first break says so; later ones are named only (they are muted, and short labels fit
+// more of a cascade).
+std::string break_text(const BreakEvent& b, bool first) {
   char buffer[96];
+  const char* what = first ? " broke first" : "";
   if (b.spring == 0) {
-    std::snprintf(buffer, sizeof buffer, "pull string broke, τ = %.2f", b.tau);
+    std::snprintf(buffer, sizeof buffer, "pull string%s, τ = %.2f", what, b.tau);
   } else {
-    std::snprintf(buffer, sizeof buffer, "spring %d broke, τ = %.2f", b.spring, b.tau);
+    std::snprintf(buffer, sizeof buffer, "spring %d%s, τ = %.2f", b.spring, what, b.tau);
   }
   return buffer;
 }
@@ -57,6 +62,19 @@ std::string format_count(const char* fmt, int count) {
   char buffer[48];
   std::snprintf(buffer, sizeof buffer, fmt, count);
   return buffer;
+}
+
+// Bead j's radius: its area is area ratio x the median bead's (chain_sizes.cpp), at least a
+// pixel; the median's radius itself for equal masses.
+double bead_radius(const Frame& frame, const PanelLayout& p, int bead) {
+  if (frame.bead_area.empty()) return p.bead_radius;
+  return std::max(1.0, p.bead_radius * std::sqrt(frame.bead_area[bead - 1]));
+}
+
+// Spring j's width: width ratio x the median spring's; the median's for equal stiffness.
+float spring_width(const Frame& frame, const PanelLayout& p, int spring) {
+  if (frame.spring_width.empty()) return p.spring_width;
+  return f(p.spring_width * frame.spring_width[spring - 1]);
 }
 
 // Calls fn(j, left, right) for every intact spring j = 1..N, left and right being the
@@ -81,22 +99,24 @@ void draw_beads_and_springs(Frame& frame, const PanelLayout& p, const Placer& at
   const std::size_t n = static_cast<std::size_t>(frame.params.beads);
   chain.springs.reserve(chain.springs.size() + n);
   beads.beads.reserve(beads.beads.size() + n);
-  const double r = p.bead_radius;
   for_each_intact_spring(frame, at, [&](int j, const Point& a, const Point& b) {
-    if (!on_frame(a, b, p.spring_width, W, H)) return;
+    const float width = spring_width(frame, p, j);
+    if (!on_frame(a, b, width, W, H)) return;
     // Computed exactly as cb::extension() does, so tests can compare colours exactly.
     const double phi = at.psi_at(j) - at.psi_at(j - 1);
     // From bead surface to bead surface (the wall has no bead), so that no coil hides under
     // a bead; a spring squeezed below two radii keeps half of its length.
     const double dx = b.x - a.x, dy = b.y - a.y, d = std::hypot(dx, dy);
-    const double inset = d > 0.0 ? std::min(r, 0.25 * d) / d : 0.0;
-    const double ia = j == 1 ? 0.0 : inset;
-    chain.springs.push_back(SpringInstance{f(a.x + ia * dx), f(a.y + ia * dy), f(b.x - inset * dx),
-                                           f(b.y - inset * dy), p.spring_width, p.coils,
-                                           strain_color(phi / frame.strain_scale, frame.style.theme)});
+    const double ra = j == 1 ? 0.0 : bead_radius(frame, p, j - 1), rb = bead_radius(frame, p, j);
+    const double ia = d > 0.0 ? std::min(ra, 0.25 * d) / d : 0.0;
+    const double ib = d > 0.0 ? std::min(rb, 0.25 * d) / d : 0.0;
+    chain.springs.push_back(SpringInstance{
+        f(a.x + ia * dx), f(a.y + ia * dy), f(b.x - ib * dx), f(b.y - ib * dy), width, p.coils,
+        strain_color(phi / frame.strain_scale_of(j), frame.style.theme)});
   });
   for (int j = 1; j <= frame.params.beads; ++j) {
     const Point c = at.at(j);
+    const double r = bead_radius(frame, p, j);
     if (on_frame(c, c, r, W, H)) beads.beads.push_back(BeadInstance{f(c.x), f(c.y), f(r), frame.pal.bead});
   }
 }
@@ -107,10 +127,10 @@ void draw_broken_halves(Frame& frame, const PanelLayout& p, const Placer& at) {
   const int W = frame.style.width, H = frame.style.height;
   Layer& chain = frame.layer(kLayerChain);
   // The gap a spring breaks at, so a detached part flying away does not stretch its half.
-  const double phi_c = frame.params.breakable() ? std::abs(frame.params.threshold) : 1.0;
-  const double cap = p.spacing + std::max(1.0, phi_c) * p.psi_scale;
   for (int j : frame.state.broken) {
     if (j < 1 || j > frame.params.beads) continue;
+    const double c = std::abs(frame.params.threshold_of(j));
+    const double cap = p.spacing + std::max(1.0, std::isfinite(c) ? c : 1.0) * p.psi_scale;
     const Point a = at.at(j - 1), b = at.at(j);
     const double dx = b.x - a.x, dy = b.y - a.y;
     const double gap = std::hypot(dx, dy);
@@ -121,13 +141,14 @@ void draw_broken_halves(Frame& frame, const PanelLayout& p, const Placer& at) {
     const double ux = dx / gap * len, uy = dy / gap * len;
     const Point a1{a.x + ux, a.y + uy}, b1{b.x - ux, b.y - uy};
     const float coils = 0.5f * p.coils;  // half a spring has half the turns
-    if (on_frame(a, a1, p.spring_width, W, H)) {
+    const float width = spring_width(frame, p, j);
+    if (on_frame(a, a1, width, W, H)) {
       chain.springs.push_back(
-          SpringInstance{f(a.x), f(a.y), f(a1.x), f(a1.y), p.spring_width, coils, frame.pal.broken_half});
+          SpringInstance{f(a.x), f(a.y), f(a1.x), f(a1.y), width, coils, frame.pal.broken_half});
     }
-    if (on_frame(b, b1, p.spring_width, W, H)) {
+    if (on_frame(b, b1, width, W, H)) {
       chain.springs.push_back(
-          SpringInstance{f(b.x), f(b.y), f(b1.x), f(b1.y), p.spring_width, coils, frame.pal.broken_half});
+          SpringInstance{f(b.x), f(b.y), f(b1.x), f(b1.y), width, coils, frame.pal.broken_half});
     }
   }
 }
@@ -166,8 +187,10 @@ struct Columns {
 // on it. Consecutive springs inside one pixel column (hundreds of them at N = 1e6) are
 // reduced in registers and merged into the column once: updating the column in memory for
 // each would chain every iteration to the previous one's store.
-template <bool kTransverse>
+// kPerSpring: the value kept is phi_j / phi_c,j (frame.spring_scale) rather than phi_j.
+template <bool kTransverse, bool kPerSpring>
 void fold_springs(const Frame& frame, const PanelLayout& p, double origin, Columns& cols) {
+  const double* scale = kPerSpring ? frame.spring_scale.data() : nullptr;
   const int n = frame.params.beads, width = frame.style.width;
   const double* psi = frame.state.psi.data();
   const double x_wall = origin, spacing = p.spacing;
@@ -197,7 +220,7 @@ void fold_springs(const Frame& frame, const PanelLayout& p, double origin, Colum
       ++next;
       next_broken = next < broken.size() ? broken[next] : n + 1;
     } else {
-      const double phi = pj - prev_psi;
+      const double phi = kPerSpring ? (pj - prev_psi) / scale[j - 1] : pj - prev_psi;
       const double lo = std::min(prev_x, x), hi = std::max(prev_x, x);
       const double y0 = std::min(prev_y, y), y1 = std::max(prev_y, y);
       if (lo >= run_x0 && hi < run_x1) {  // inside the open run's column
@@ -239,16 +262,24 @@ void draw_ribbon(Frame& frame, const PanelLayout& p, double origin) {
   const int W = frame.style.width;
   const bool transverse = p.view == View::Transverse;
   const std::size_t w = static_cast<std::size_t>(W);
+  const bool per_spring = !frame.spring_scale.empty();
   Columns cols;
   cols.best_abs.assign(w, -1.0);
   cols.best_phi.assign(w, 0.0);
   if (transverse) {
     cols.y_lo.assign(w, std::numeric_limits<double>::infinity());
     cols.y_hi.assign(w, -std::numeric_limits<double>::infinity());
-    fold_springs<true>(frame, p, origin, cols);
+    if (per_spring) {
+      fold_springs<true, true>(frame, p, origin, cols);
+    } else {
+      fold_springs<true, false>(frame, p, origin, cols);
+    }
+  } else if (per_spring) {
+    fold_springs<false, true>(frame, p, origin, cols);
   } else {
-    fold_springs<false>(frame, p, origin, cols);
+    fold_springs<false, false>(frame, p, origin, cols);
   }
+  const double scale = per_spring ? 1.0 : frame.strain_scale;
 
   Layer& chain = frame.layer(kLayerChain);
   const double half = 0.5 * p.ribbon_width;
@@ -262,7 +293,7 @@ void draw_ribbon(Frame& frame, const PanelLayout& p, double origin) {
       cell.w = 1.0f;
       cell.y = f(transverse ? cols.y_lo[c] - half : p.centre_y - half);
       cell.h = f(transverse ? cols.y_hi[c] - cols.y_lo[c] + 2.0 * half : 2.0 * half);
-      cell.color = strain_color(cols.best_phi[c] / frame.strain_scale, frame.style.theme);
+      cell.color = strain_color(cols.best_phi[c] / scale, frame.style.theme);
     }
     const bool extends = open && filled && cell.y == run.y && cell.h == run.h &&
                          cell.color.r == run.color.r && cell.color.g == run.color.g &&
@@ -288,6 +319,103 @@ Point break_anchor(const Frame& frame, const PanelLayout& p, const Placer& at, i
   const Point a = at.at(spring - 1), b = at.at(spring);
   if (p.view == View::Transverse) return {0.5 * (a.x + b.x), 0.5 * (a.y + b.y)};
   return {a.x + 0.5 * std::clamp(b.x - a.x, 0.0, static_cast<double>(p.spacing)), a.y};
+}
+
+// The labels of the breaks (break_labels.h): the first break's in bold with an accent leader,
+// then the later ones by time in the dim text colour where they fit, the rest counted.
+// `below`: from a break's anchor down to its pointer's base, where the leader line starts.
+template <class AnchorOf>
+void place_break_labels(Frame& frame, const PanelLayout& p, int first, double below,
+                        const AnchorOf& anchor_of) {
+  const std::vector<BreakEvent>& breaks = frame.out.breaks_shown;
+  Layer& marks = frame.layer(kLayerMarks);
+  const SnapshotLayout& l = frame.layout;
+  const double ts = l.text_size, px = l.font_px;
+  const int W = frame.style.width;
+
+  // Requests in priority order: the first break, then the others by time.
+  std::vector<int> order;
+  order.reserve(breaks.size());
+  order.push_back(first);
+  for (int k = 0; k < static_cast<int>(breaks.size()); ++k)
+    if (k != first) order.push_back(k);
+  std::stable_sort(order.begin() + 1, order.end(),
+                   [&](int a, int b) { return breaks[a].tau < breaks[b].tau; });
+  std::vector<LabelRequest> requests;
+  std::vector<std::string> texts;
+  requests.reserve(order.size());
+  texts.reserve(order.size());
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const BreakEvent& b = breaks[order[i]];
+    const bool is_first = i == 0;
+    const Point a = anchor_of(b);
+    texts.push_back(break_text(b, is_first));
+    requests.push_back(LabelRequest{
+        a.x, a.y + below,
+        text_width(texts.back(), l.font_px, is_first ? FontFace::Bold : FontFace::Sans)});
+  }
+
+  // A label's box: from the top of the tallest glyph to the bottom of the deepest descender,
+  // in either face; its `y` is the top of its capitals.
+  double above = 0.0, under = 0.0;
+  for (FontFace face : {FontFace::Sans, FontFace::Bold}) {
+    const Font& font = Font::get(face);
+    const double ascent = font.ascent(l.font_px), cap = font.cap_height(l.font_px);
+    above = std::max(above, ascent - cap);
+    under = std::max(under, cap + (px - ascent));
+  }
+  LabelArea area;
+  area.first_row_y = p.markers_top;
+  area.row_h = std::max(1.5 * ts, above + under + 0.15 * ts);  // boxes a little apart
+  area.rows = std::max(1, static_cast<int>((p.bottom - p.markers_top) / area.row_h));
+  area.box_above = above;
+  area.box_h = above + under;
+  area.leader_end = 0.5 * ts;
+  area.x_min = l.margin;
+  area.x_max = W - l.margin;
+  area.offset = 0.5 * ts;
+  area.gap = ts;  // two labels in a row read as two
+  const auto more_text = [](int k) {
+    return format_count(k == 1 ? "+%d more break" : "+%d more breaks", k);
+  };
+  const auto suffix_text = [](int k) { return format_count(" (+%d more)", k); };
+  const LabelPlan plan = place_labels(
+      requests, area,
+      [&](int k) { return static_cast<double>(text_width(more_text(k), l.font_px)); },
+      [&](int k) {
+        return static_cast<double>(text_width(suffix_text(k), l.font_px, FontFace::Bold));
+      });
+
+  frame.out.breaks_unlabelled = plan.dropped;
+  for (const PlacedLabel& placed : plan.labels) {
+    if (placed.request < 0) {  // "+k more breaks"
+      marks.labels.push_back(
+          Label{more_text(plan.dropped), f(placed.x), f(placed.y), l.font_px, frame.pal.dim_text});
+      frame.out.break_labels.push_back(BreakLabelBox{-1, false, placed.box});
+      continue;
+    }
+    const bool is_first = placed.request == 0;
+    const Color& line = is_first ? frame.pal.first_break : frame.pal.later_break;
+    if (placed.has_leader) {
+      // The leader, then a short elbow into the label's row when the label sits beside it.
+      const float width = is_first ? f(std::max(2.0, 0.12 * ts)) : 1.0f;
+      marks.segments.push_back(Segment{f(placed.leader_x), f(placed.leader_y0), f(placed.leader_x),
+                                       f(placed.leader_y1), width, line});
+      const double to = placed.box.x >= placed.leader_x ? placed.box.x - 0.15 * ts
+                                                        : placed.box.right() + 0.15 * ts;
+      if (std::abs(to - placed.leader_x) <= area.offset) {
+        marks.segments.push_back(Segment{f(placed.leader_x), f(placed.leader_y1), f(to),
+                                         f(placed.leader_y1), width, line});
+      }
+    }
+    std::string text = texts[placed.request];
+    if (is_first && plan.more_in_first) text += suffix_text(plan.dropped);
+    marks.labels.push_back(Label{text, f(placed.x), f(placed.y), l.font_px,
+                                 is_first ? frame.pal.text : frame.pal.dim_text,
+                                 is_first ? FontFace::Bold : FontFace::Sans});
+    frame.out.break_labels.push_back(
+        BreakLabelBox{breaks[order[placed.request]].spring, is_first, placed.box});
+  }
 }
 
 void draw_breaks(Frame& frame, const PanelLayout& p, const Placer& at) {
@@ -340,15 +468,15 @@ void draw_breaks(Frame& frame, const PanelLayout& p, const Placer& at) {
     }
   }
 
-  // Markers that stay: a pointer under every break, and a label for the first ones in time
-  // (the rest are counted) unless the other panel labels them already (two panels). Rows
-  // run from the break nearest the pull end (top) to the one nearest the wall (bottom):
-  // labels extend right of their pointer and every pointer further left has a lower row, so
-  // no leader line crosses a label. Anchors keep the springs' order as the chain moves, so
-  // rows never reshuffle between frames.
-  const double clear =
-      std::max(static_cast<double>(p.bead_radius), frame.out.ribbon ? 0.5 * p.ribbon_width : 0.0) +
-      2.0;
+  // Markers that stay: a pointer under every break, the first break's in the accent colour
+  // and drawn last (on top), the later ones muted. Labels go in rows below the chain where
+  // they overlap nothing (break_labels.h), unless the other panel labels them already.
+  int first = 0;  // the earliest break; of equal times, the one recorded first
+  for (int k = 1; k < static_cast<int>(breaks.size()); ++k)
+    if (breaks[k].tau < breaks[first].tau) first = k;
+  const double clear = std::max(static_cast<double>(p.largest_bead_radius),
+                                frame.out.ribbon ? 0.5 * p.ribbon_width : 0.0) +
+                       2.0;
   const double tri_h = 0.6 * ts, tri_w = 0.35 * ts;
   const auto anchor_of = [&](const BreakEvent& b) {
     Point a = break_anchor(frame, p, at, b.spring);
@@ -356,50 +484,17 @@ void draw_breaks(Frame& frame, const PanelLayout& p, const Placer& at) {
     a.y = std::clamp(a.y, static_cast<double>(p.top), static_cast<double>(p.bottom));
     return a;
   };
-  for (const BreakEvent& b : breaks) {
+  const auto pointer = [&](const BreakEvent& b, const Color& colour) {
     const Point a = anchor_of(b);
     const double tip = a.y + clear, base = tip + tri_h;
     marks.triangles.push_back(
-        Triangle{{f(a.x), f(a.x - tri_w), f(a.x + tri_w)}, {f(tip), f(base), f(base)}, frame.pal.marker});
-  }
-  if (l.panel_count == 2 && p.view == View::Transverse) return;
-
-  const double row_h = 1.5 * ts;
-  const int rows = std::max(1, static_cast<int>((p.bottom - p.markers_top) / row_h));
-  const int count = static_cast<int>(breaks.size());
-  const int shown = count <= rows ? count : std::max(1, rows - 1);
-  std::vector<const BreakEvent*> order;
-  for (int k = 0; k < shown; ++k) order.push_back(&breaks[k]);
-  const auto from_wall = [&](const BreakEvent* b) {  // the pull string sits beyond bead N
-    return b->spring == 0 ? frame.params.beads + 1 : b->spring;
+        Triangle{{f(a.x), f(a.x - tri_w), f(a.x + tri_w)}, {f(tip), f(base), f(base)}, colour});
   };
-  std::stable_sort(order.begin(), order.end(), [&](const BreakEvent* a, const BreakEvent* b) {
-    return from_wall(a) > from_wall(b);
-  });
-  for (int k = 0; k < shown; ++k) {
-    const BreakEvent& b = *order[k];
-    const Point a = anchor_of(b);
-    const double base = a.y + clear + tri_h;
-    const double row_y = p.markers_top + k * row_h;
-    if (row_y + 0.5 * ts > base) {  // a leader line down to the label's row
-      marks.segments.push_back(
-          Segment{f(a.x), f(base), f(a.x), f(row_y + 0.5 * ts), 1.0f, frame.pal.marker});
-    }
-    std::string text = break_text(b);
-    if (k == shown - 1 && shown == rows && count > shown) {
-      text += format_count(" (+%d more)", count - shown);
-    }
-    const double w = text_width(text, l.font_px);
-    double x = a.x + 0.5 * ts;
-    if (x + w > W - l.margin) x = a.x - 0.5 * ts - w;  // near the right edge: to the left
-    marks.labels.push_back(
-        Label{text, f(std::max(static_cast<double>(l.margin), x)), f(row_y), l.font_px, frame.pal.text});
-  }
-  if (count > shown && shown < rows) {
-    const std::string more = format_count("+%d more breaks", count - shown);
-    marks.labels.push_back(
-        Label{more, f(l.x_wall + 0.5 * ts), f(p.markers_top + shown * row_h), l.font_px, frame.pal.dim_text});
-  }
+  for (int k = 0; k < static_cast<int>(breaks.size()); ++k)
+    if (k != first) pointer(breaks[k], frame.pal.later_break);
+  pointer(breaks[first], frame.pal.first_break);
+  if (l.panel_count == 2 && p.view == View::Transverse) return;
+  place_break_labels(frame, p, first, clear + tri_h, anchor_of);
 }
 
 // The pull: an arrow at bead N whose length is f / force_range of the longest arrow, after

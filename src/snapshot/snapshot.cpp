@@ -13,6 +13,7 @@
 #include <limits>
 
 #include "snapshot/snapshot_internal.h"
+#include "snapshot/strain_scale.h"
 #include "text/font.h"
 
 namespace cb {
@@ -50,8 +51,10 @@ constexpr double kMaxBeadRadius = 18.0;
 constexpr double kRibbonSpacing = 3.0;  // below this many pixels per bead: the strain ribbon
 
 // `two_panels`: the first text row holds the panel's caption, so the chain keeps off it.
+// `sizes`: the largest bead area and spring width ratio (1 for equal masses / stiffness).
 PanelLayout panel_layout(View view, double top, double bottom, bool two_panels,
-                         const SnapshotLayout& l, const SnapshotStyle& style, int beads) {
+                         const SnapshotLayout& l, const SnapshotStyle& style, int beads,
+                         const SizeRange& sizes) {
   // A zoomed panel spans its stretch of springs; a longitudinal one moves with the stretch's
   // first bead, so it needs room for the stretch's own extension only.
   const double full_range = style.psi_range;
@@ -74,12 +77,26 @@ PanelLayout panel_layout(View view, double top, double bottom, bool two_panels,
   // A chain that stretches a lot would get tiny beads at rest; size them for the geometric
   // mean of the rest and the fully stretched spacing (still below half the rest spacing).
   const double typical = std::min(std::sqrt(spacing * usable / beads), 1.6 * spacing);
-  const double r = std::clamp(0.3 * typical, 1.5, kMaxBeadRadius);
+  const double r0 = std::clamp(0.3 * typical, 1.5, kMaxBeadRadius);
+  // Unequal masses: the median bead shrinks until the heaviest one (area ratio max_area) fits
+  // where an equal bead could be, or into 45% of the spacing if that is more (and never
+  // beyond kMaxBeadRadius, which the layout keeps free right of bead N).
+  double r = r0;
+  if (sizes.max_area > 1.0) {
+    const double room = std::max(r0, std::min(0.45 * spacing, kMaxBeadRadius));
+    r = std::min(r0, room / std::sqrt(sizes.max_area));
+  }
+  const double r_max = sizes.max_area > 1.0 ? r * std::sqrt(sizes.max_area) : r;
+  // Unequal stiffness likewise: the widest spring at most 2.2 median radii across (a little
+  // more than a bead's diameter; wider, a short stiff coil reads as a block).
+  double spring_width = 1.4 * r;
+  if (sizes.max_width > 1.0) spring_width = std::min(spring_width, 2.2 * r / sizes.max_width);
   // A coil needs room between the beads to read as one; short springs are bars.
   const double free_length = spacing - 2.0 * r;
   p.spacing = static_cast<float>(spacing);
   p.bead_radius = static_cast<float>(r);
-  p.spring_width = static_cast<float>(1.4 * r);
+  p.largest_bead_radius = static_cast<float>(r_max);
+  p.spring_width = static_cast<float>(spring_width);
   p.coils = free_length >= 20.0
                 ? static_cast<float>(std::clamp(std::round(free_length / 6.0), 4.0, 8.0))
                 : 0.0f;
@@ -91,7 +108,7 @@ PanelLayout panel_layout(View view, double top, double bottom, bool two_panels,
     p.ribbon_width = static_cast<float>(std::clamp(0.1 * h, 4.0, 30.0));
     p.wall_half_height = static_cast<float>(std::min(0.35 * h, std::max(4.0 * r, 0.15 * h)));
     p.half_height = static_cast<float>(0.5 * h);
-    const double clear = std::max(r, 0.5 * p.ribbon_width) + 2.0;
+    const double clear = std::max(r_max, 0.5 * p.ribbon_width) + 2.0;
     p.markers_top = static_cast<float>(centre + clear + 0.6 * ts + 0.4 * ts);
   } else {
     // A band at the bottom holds the break markers' labels (with two panels the
@@ -99,12 +116,12 @@ PanelLayout panel_layout(View view, double top, double bottom, bool two_panels,
     const double band = two_panels ? 0.5 * ts : std::min(8.0 * ts, 0.3 * h);
     const double plot_bottom = bottom - band;
     const double centre = 0.5 * (top + plot_bottom);
-    const double half = std::max(1.0, 0.5 * (plot_bottom - top) - r - 2.0);
+    const double half = std::max(1.0, 0.5 * (plot_bottom - top) - r_max - 2.0);
     p.centre_y = static_cast<float>(centre);
     p.half_height = static_cast<float>(half);
     p.psi_scale = static_cast<float>(half / style.psi_range);
     p.ribbon_width = static_cast<float>(std::clamp(0.02 * h, 2.0, 8.0));
-    p.wall_half_height = static_cast<float>(half + r);
+    p.wall_half_height = static_cast<float>(half + r_max);
     p.markers_top = static_cast<float>(plot_bottom + 0.4 * ts);
   }
   return p;
@@ -143,7 +160,8 @@ std::string minus(std::string text) {
 
 // The colour bar: strain_color over s in [-1, 1], ticks at -1, 0, +1 with their values, and
 // which side is compression and which tension.
-void add_legend(Layer& layer, const SnapshotLayout& l, const SnapshotStyle& style,
+// `per_spring`: the springs have thresholds of their own, and the bar is s = phi_j / phi_c,j.
+void add_legend(Layer& layer, const SnapshotLayout& l, const SnapshotStyle& style, bool per_spring,
                 const Palette& pal) {
   const float ts = l.text_size;
   const int cells = std::max(1, std::min(256, static_cast<int>(l.legend_w)));
@@ -155,8 +173,12 @@ void add_legend(Layer& layer, const SnapshotLayout& l, const SnapshotStyle& styl
   }
   const bool phi_c = style.threshold > 0;
   const double scale = phi_c ? style.threshold : style.strain_range;
-  const std::string ticks[3] = {(phi_c ? "−φ_c = " : "φ = ") + minus(format("%.3g", -scale)),
-                                "0", (phi_c ? "+φ_c = " : "φ = +") + format("%.3g", scale)};
+  std::string ticks[3] = {(phi_c ? "−φ_c = " : "φ = ") + minus(format("%.3g", -scale)), "0",
+                          (phi_c ? "+φ_c = " : "φ = +") + format("%.3g", scale)};
+  if (per_spring) {  // each spring's own threshold: phi_j / phi_c,j = -1, 0, +1
+    ticks[0] = "\u2212φ_{c,j}";
+    ticks[2] = "+φ_{c,j}";
+  }
   const float tick_y = l.legend_y + l.legend_h;
   const float label_y = tick_y + 0.6f * ts;
   for (int t = 0; t < 3; ++t) {
@@ -193,6 +215,22 @@ void add_overview(Layer& layer, const SnapshotLayout& l, int beads, const Palett
 }  // namespace
 
 SnapshotLayout snapshot_layout(const SnapshotStyle& style, const ChainParams& params) {
+  return layout_for(style, params,
+                    size_range(bead_area_ratios(params), spring_width_ratios(params)));
+}
+
+namespace snapshot_detail {
+
+SizeRange size_range(const std::vector<double>& area_ratios,
+                     const std::vector<double>& width_ratios) {
+  SizeRange r;
+  for (double a : area_ratios) r.max_area = std::max(r.max_area, a);
+  for (double w : width_ratios) r.max_width = std::max(r.max_width, w);
+  return r;
+}
+
+SnapshotLayout layout_for(const SnapshotStyle& style, const ChainParams& params,
+                          const SizeRange& sizes) {
   assert(style.width > 0 && style.height > 0 && "frame size must be positive");
   assert(params.beads >= 1 && "a chain needs at least one bead");
   assert(style.psi_range > 0 && "psi_range sets the scale and must be positive");
@@ -243,18 +281,18 @@ SnapshotLayout snapshot_layout(const SnapshotStyle& style, const ChainParams& pa
   if (style.view == View::Both) {
     const double gap = ts;
     const double h = std::max(1.0, 0.5 * (bottom - top - gap));
-    l.panels[0] = panel_layout(View::Longitudinal, top, top + h, true, l, style, params.beads);
-    l.panels[1] = panel_layout(View::Transverse, bottom - h, bottom, true, l, style, params.beads);
+    l.panels[0] =
+        panel_layout(View::Longitudinal, top, top + h, true, l, style, params.beads, sizes);
+    l.panels[1] =
+        panel_layout(View::Transverse, bottom - h, bottom, true, l, style, params.beads, sizes);
     l.panel_count = 2;
   } else {
-    l.panels[0] = panel_layout(style.view, top, bottom, false, l, style, params.beads);
+    l.panels[0] = panel_layout(style.view, top, bottom, false, l, style, params.beads, sizes);
     l.panel_count = 1;
   }
   for (int i = 0; i < l.panel_count; ++i) l.ribbon |= l.panels[i].spacing < kRibbonSpacing;
   return l;
 }
-
-namespace snapshot_detail {
 
 Color to_color(Rgb8 c, float alpha) { return Color{c.r / 255.0f, c.g / 255.0f, c.b / 255.0f, alpha}; }
 
@@ -276,6 +314,10 @@ Palette palette(ThemeName name) {
   p.rest_line = to_color(t.rest_line);
   p.force = to_color(t.force);
   p.marker = to_color(t.marker);
+  // The first break stands out in the accent colour; later ones recede (the marker colour
+  // halfway to the background), so a cascade does not outshout the break that matters.
+  p.first_break = to_color(t.accent);
+  p.later_break = mix(t.marker, t.background, 0.45f);
   // The flash: a warm white glow on the dark theme; on white paper the marker's amber.
   p.flash = name == ThemeName::Light ? to_color(t.marker) : Color{1.0f, 0.94f, 0.78f, 1.0f};
   return p;
@@ -320,15 +362,33 @@ RenderSnapshot build_snapshot(const ChainState& state, const ChainParams& params
   out.tau = state.tau;
   out.force = force;
   out.beads = params.beads;
-  out.layout = snapshot_layout(style, params);
+  std::vector<double> areas = bead_area_ratios(params), widths = spring_width_ratios(params);
+  out.layout = layout_for(style, params, size_range(areas, widths));
   out.ribbon = out.layout.ribbon;
   out.layers.resize(kLayerCount);
   for (const BreakEvent& b : state.breaks) {
     if (b.tau <= state.tau) out.breaks_shown.push_back(b);
   }
 
-  Frame frame{state, params, style, out.layout, pal, force, 1.0, true, out.breaks_shown, out};
+  Frame frame{state,
+              params,
+              style,
+              out.layout,
+              pal,
+              force,
+              1.0,
+              true,
+              std::move(areas),
+              std::move(widths),
+              {},
+              out.breaks_shown,
+              out};
   frame.strain_scale = style.threshold > 0 ? style.threshold : style.strain_range;
+  if (strain_per_spring(params)) {  // phi_j / phi_c,j (snapshot/strain_scale.h)
+    frame.spring_scale.resize(static_cast<std::size_t>(params.beads));
+    for (int j = 1; j <= params.beads; ++j)
+      frame.spring_scale[j - 1] = spring_strain_scale(params, j, frame.strain_scale);
+  }
   std::stable_sort(frame.breaks_by_spring.begin(), frame.breaks_by_spring.end(),
                    [](const BreakEvent& a, const BreakEvent& b) { return a.spring < b.spring; });
   frame.string_intact = !state.string_broken && (frame.breaks_by_spring.empty() ||
@@ -349,7 +409,7 @@ RenderSnapshot build_snapshot(const ChainState& state, const ChainParams& params
       back.labels.push_back(Label{caption, l.margin, p.top, l.font_px, pal.dim_text});
     }
   }
-  add_legend(back, l, style, pal);
+  add_legend(back, l, style, strain_per_spring(params), pal);
   if (l.zoomed()) add_overview(back, l, params.beads, pal);
   if (!style.caption.empty()) {
     const float w = text_width(style.caption, l.font_px);

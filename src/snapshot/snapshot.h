@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "physics/chain.h"
+#include "snapshot/break_labels.h"
 #include "text/text_layout.h"
 #include "theme/theme.h"
 
@@ -95,8 +96,9 @@ struct PanelLayout {
   float half_height = 0;           // transverse: pixels from the rest line to |psi| = psi_range
   float spacing = 0;               // pixels per unit of rest length
   float psi_scale = 0;             // pixels per unit of psi (longitudinal: = spacing)
-  float bead_radius = 0;
-  float spring_width = 0;  // SpringInstance::width of an intact spring
+  float bead_radius = 0;  // a bead of the median mass (bead j: bead_radius * sqrt(area ratio))
+  float largest_bead_radius = 0;  // the heaviest bead's (bead_radius for equal masses)
+  float spring_width = 0;  // SpringInstance::width of an intact spring of the median stiffness
   float coils = 0;         // SpringInstance::coils of an intact spring (0: bars)
   float ribbon_width = 0;  // thickness of the strain ribbon, pixels
   float wall_half_height = 0;
@@ -125,6 +127,13 @@ struct SnapshotLayout {
   float caption_y = 0;  // top of the caption's capitals (when there is one)
 };
 
+// One placed label of a break (or of the "+k more" count), for tests and overlays.
+struct BreakLabelBox {
+  int spring = -1;     // the spring it names (0: the pull string); -1: "+k more"
+  bool first = false;  // the first break: accent pointer and leader, bold text
+  LabelBox box;        // the label's line box (ascent to descent), pixels
+};
+
 struct RenderSnapshot {
   int width = 0, height = 0;  // pixels
   Color background;
@@ -134,6 +143,11 @@ struct RenderSnapshot {
   int beads = 0;        // N
   bool ribbon = false;  // beads under ~3 px apart: springs drawn as a strain ribbon
   std::vector<BreakEvent> breaks_shown;  // breaks with tau <= this tau (markers on screen)
+  // The labels of breaks_shown, as placed (snapshot/break_labels.h): their boxes never
+  // intersect and the first break's is always there; breaks_unlabelled are counted in a
+  // "+k more" label (or in the first label's text when even that found no room).
+  std::vector<BreakLabelBox> break_labels;
+  int breaks_unlabelled = 0;
   double arrow_length = 0.0;  // force arrow, tail to tip, pixels (< 0 points left; 0: none)
   SnapshotLayout layout;
   std::vector<Layer> layers;  // kLayerCount layers, in SnapshotLayer order
@@ -165,12 +179,23 @@ struct SnapshotStyle {
   std::string caption;  // a line of text centred under the chain (above the colour bar)
 };
 
-// The strain colour map: s = phi / phi_c in [-1, 1] (clamped). Diverging (compression blue,
+// The strain colour map: s = phi_j / phi_c,j in [-1, 1] (clamped): how close spring j is to
+// breaking under its own threshold (phi / phi_c for the uniform chain; phi / strain_range for
+// an unbreakable one). Diverging (compression blue,
 // tension orange) with lightness rising monotonically from s = -1 to s = +1, so compression
 // and tension differ in greyscale print and for colour-blind viewers; saturates visibly
 // (towards a hot, brighter tone) as |s| approaches 1.
 Color strain_color(double s, ThemeName theme);
 Color strain_color(double s);  // the dark theme's
+
+// How the chain's coefficients show (issue #21): a bead's area follows its mass and a spring's
+// width (coil amplitude and wire) its stiffness, relative to the chain's median and clamped so
+// that every bead and spring stays readable. Empty for a uniform mass or stiffness (every
+// ratio 1), so the paper's chain is drawn exactly as before.
+inline constexpr double kBeadAreaRange = 4.0;     // areas from 1/4 to 4 x the median bead's
+inline constexpr double kSpringWidthRange = 2.0;  // widths from 1/2 to 2 x the median spring's
+std::vector<double> bead_area_ratios(const ChainParams& params);     // bead j at j-1
+std::vector<double> spring_width_ratios(const ChainParams& params);  // spring j at j-1
 
 // The layout build_snapshot uses for this style and chain.
 SnapshotLayout snapshot_layout(const SnapshotStyle& style, const ChainParams& params);

@@ -15,6 +15,7 @@ struct Palette {
   Color background, text, dim_text;
   Color wall, hatch, wall_face;  // the wall's fill, its hatching and its face
   Color bead, broken_half, rest_line, force, marker, flash;
+  Color first_break, later_break;  // pointers and leaders: the theme's accent; muted marker
 };
 Palette palette(ThemeName theme);
 Color to_color(Rgb8 c, float alpha = 1.0f);
@@ -22,6 +23,17 @@ Color to_color(Rgb8 c, float alpha = 1.0f);
 // Timing of the break animation, in tau units.
 inline constexpr double kRecoilTime = 2.0;  // halves shorten from 50% to 30% of the gap
 inline constexpr double kFlashTime = 1.5;   // the flash fades out
+
+// The largest bead area ratio and spring width ratio of a chain (bead_area_ratios,
+// spring_width_ratios; 1 when they are empty): the layout sizes beads and springs by them.
+struct SizeRange {
+  double max_area = 1.0, max_width = 1.0;
+};
+SizeRange size_range(const std::vector<double>& area_ratios,
+                     const std::vector<double>& width_ratios);
+// snapshot_layout() with the ratios' range already known.
+SnapshotLayout layout_for(const SnapshotStyle& style, const ChainParams& params,
+                          const SizeRange& sizes);
 
 struct Point {
   double x = 0, y = 0;
@@ -37,6 +49,15 @@ struct Frame {
   double force = 0.0;
   double strain_scale = 1.0;  // |phi| at the ends of the colour scale
   bool string_intact = true;  // the pull string still holds (or there is none)
+  // Per bead and per spring (index j-1), empty for the uniform chain: area and width ratios
+  // (chain_sizes.cpp) and the scale that maps phi_j to the colour map, phi_c,j.
+  std::vector<double> bead_area;
+  std::vector<double> spring_width;
+  std::vector<double> spring_scale;
+  // The scale of spring j's colour: phi_j / strain_scale_of(j) in [-1, 1].
+  double strain_scale_of(int spring) const {
+    return spring_scale.empty() ? strain_scale : spring_scale[spring - 1];
+  }
   // (spring, tau) of every break in breaks_shown, sorted by spring, for the age lookup.
   std::vector<BreakEvent> breaks_by_spring;
   RenderSnapshot& out;

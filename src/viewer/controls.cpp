@@ -3,6 +3,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -94,12 +95,24 @@ const char* next_view(const std::string& view) {
   return "longitudinal";
 }
 
+bool dock_next_window(const PixelRect& rect) {
+  if (rect.empty()) return false;
+  const ImVec2 to_ui(1.0f / ImGui::GetIO().DisplayFramebufferScale.x,
+                     1.0f / ImGui::GetIO().DisplayFramebufferScale.y);
+  ImGui::SetNextWindowPos(ImVec2(rect.x * to_ui.x, rect.y * to_ui.y), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(rect.w * to_ui.x, rect.h * to_ui.y), ImGuiCond_Always);
+  return true;
+}
+
 void draw_controls(ViewerModel& model, SceneDesc& draft, const Session& session,
-                   ViewerRequests& requests) {
-  if (!model.show_controls) return;
-  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowBgAlpha(0.85f);
-  ImGui::Begin("chainbreak", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+                   ViewerRequests& requests, const PixelRect& rect) {
+  if (!dock_next_window(rect)) return;
+  ImGui::Begin("chainbreak", nullptr, kDockedWindow);
+  // Sliders take the column's width less their labels' (the longest, "speed (tau/s)").
+  const float item_width =
+      std::max(ImGui::GetFontSize() * 4.0f, ImGui::GetContentRegionAvail().x -
+                                                ImGui::CalcTextSize("speed (tau/s)").x -
+                                                ImGui::GetStyle().ItemInnerSpacing.x);
   if (ImGui::Button(model.playing ? "Pause" : "Play")) model.playing = !model.playing;
   ImGui::SameLine();
   if (ImGui::Button("Step")) requests.step += 1;
@@ -107,11 +120,11 @@ void draw_controls(ViewerModel& model, SceneDesc& draft, const Session& session,
   if (ImGui::Button("Restart")) requests.restart = true;
   ImGui::SameLine();
   if (ImGui::Button("Help")) model.show_help = !model.show_help;
-  ImGui::SetNextItemWidth(200);
+  ImGui::SetNextItemWidth(item_width);
   if (slider("speed (tau/s)", model.speed, kMinSpeed, kMaxSpeed, true))
     requests.speed_changed = true;
 
-  ImGui::PushItemWidth(200);
+  ImGui::PushItemWidth(item_width);
   if (ImGui::CollapsingHeader("Chain and drive", ImGuiTreeNodeFlags_DefaultOpen)) {
     requests.apply_settings |= chain_controls(draft.chain);
     requests.apply_settings |= drive_controls(draft.drive);
@@ -137,9 +150,13 @@ void draw_controls(ViewerModel& model, SceneDesc& draft, const Session& session,
   ImGui::End();
 }
 
-void draw_help(ViewerModel& model) {
+void draw_help(ViewerModel& model, const PixelRect& picture) {
   if (!model.show_help) return;
-  ImGui::SetNextWindowPos(ImVec2(420, 10), ImGuiCond_FirstUseEver);
+  // Asked for (H), so over the picture, in its middle: closed again with H or its button.
+  const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
+  ImGui::SetNextWindowPos(
+      ImVec2((picture.x + 0.5f * picture.w) / scale.x, (picture.y + 0.5f * picture.h) / scale.y),
+      ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
   ImGui::Begin("Help: keyboard and mouse", &model.show_help, ImGuiWindowFlags_AlwaysAutoResize);
   if (ImGui::BeginTable("shortcuts", 2, ImGuiTableFlags_RowBg)) {
     for (const Shortcut& s : kShortcuts) {

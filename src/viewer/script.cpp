@@ -77,18 +77,32 @@ std::vector<ScriptAction> parse_script(const std::string& text, const std::strin
           fail("set beads needs a whole number of beads, 1 .. 10^7, got " + a.argument);
       }
     } else if (act == "snapshot" || act == "screenshot" || act == "save" || act == "record" ||
-               act == "select") {
+               act == "select" || act == "layout") {
       if (!(words >> a.argument)) fail(act + " needs an argument, e.g. 10 " + act + " out");
       if (act == "record" && a.frame == last_record)
         fail("a second record action in frame " + std::to_string(a.frame) +
              "; a frame starts or stops one recording: put it on the next frame");
       if (act == "record") last_record = a.frame;
+    } else if (act == "resize") {
+      // The window's new size, as a person dragging its corner would leave it.
+      if (!(words >> a.key >> a.argument))
+        fail("resize needs WIDTH HEIGHT, e.g. 40 resize 1280 720");
+      for (const std::string& n : {a.key, a.argument}) {
+        char* end = nullptr;
+        const long v = std::strtol(n.c_str(), &end, 10);
+        if (*end != '\0' || v < kMinWindowSide || v > kMaxWindowSide)
+          fail("resize needs whole numbers of pixels, " + std::to_string(kMinWindowSide) + " .. " +
+               std::to_string(kMaxWindowSide) + ", got '" + n + "'");
+      }
+    } else if (act == "panels" || act == "present") {
+      if (!(words >> a.argument) || (a.argument != "on" && a.argument != "off"))
+        fail(act + " needs on or off, e.g. 10 " + act + " off");
     } else if (act == "step") {
       if (!(words >> a.argument)) a.argument = "1";
     } else if (act != "play" && act != "pause" && act != "restart" && act != "quit") {
       fail("unknown action '" + act +
-           "'; expected play, pause, step, restart, quit, set, snapshot, screenshot, save, record "
-           "or select");
+           "'; expected play, pause, step, restart, quit, set, snapshot, screenshot, layout, "
+           "save, record, select, resize, panels or present");
     }
     std::string extra;
     if (words >> extra) fail("unexpected '" + extra + "' after the action");

@@ -12,6 +12,11 @@
 //   save PATH         the current settings as a scene file
 //   record PATH       start writing the session to a video; `record stop` ends it
 //   select SPRING     show spring SPRING's phi(tau) plot, as a click on it would
+//   layout PATH       where this frame put everything, as JSON (window, picture, panels,
+//                     the ImGui windows, the wall, beads, force arrow and marker): for tests
+//   resize W H        the window's new size in pixels, as dragging its corner would
+//   panels on|off     show or hide the docked controls and plot, as Tab does
+//   present on|off    presentation mode (fullscreen, panels hidden), as F11 or F does
 // Frames must not decrease. The viewer quits after the last action even without `quit`.
 #pragma once
 
@@ -21,11 +26,15 @@
 
 namespace cb {
 
+// The window sizes `resize` accepts, pixels.
+inline constexpr int kMinWindowSide = 64, kMaxWindowSide = 16384;
+
 struct ScriptAction {
   std::int64_t frame = 0;
   std::string action;    // play, pause, step, ... (above)
-  std::string key;       // set: the setting
-  std::string argument;  // set: the value; snapshot/save/record: the path; step/select: a number
+  std::string key;       // set: the setting; resize: the width
+  std::string argument;  // set: the value; snapshot/save/record/layout: the path; step/select:
+                         // a number; resize: the height; panels/present: on or off
   int line = 0;          // in the file, for messages
 };
 

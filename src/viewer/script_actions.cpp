@@ -60,6 +60,13 @@ void apply_script(const std::vector<ScriptAction>& actions, SceneDesc& draft, Vi
     if (a.action == "snapshot") r.snapshot = true, r.snapshot_path = a.argument;
     if (a.action == "save") r.save = true, r.save_path = a.argument;
     if (a.action == "screenshot") r.screenshot_path = a.argument;
+    if (a.action == "layout") r.layout_path = a.argument;
+    if (a.action == "panels") model.show_controls = a.argument == "on";
+    if (a.action == "present") r.present = a.argument == "on" ? 1 : 0;
+    if (a.action == "resize") {
+      r.resize_width = std::atoi(a.key.c_str());
+      r.resize_height = std::atoi(a.argument.c_str());
+    }
     if (a.action == "record" && (a.argument == "stop") == model.recording)
       r.record = true, r.record_path = a.argument == "stop" ? "" : a.argument;
   }

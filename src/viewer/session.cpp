@@ -36,8 +36,16 @@ void Session::set_view(const std::string& view) {
   options_.frame.view = view;
   plan_.frame.view = view;
   // As measure_plan lays it out, without the pre-pass: the run's extent has not changed.
-  plan_.style = snapshot_style(scene_, plan_.frame, plan_.extent);
-  if (plan_.overlay_layout.enabled) plan_.style.chain_height = plan_.overlay_layout.chain_height;
+  lay_out_frame(scene_, plan_, plan_.frame.width, plan_.frame.height);
+}
+
+RenderPlan Session::plan_at(int width, int height) const {
+  RenderPlan p = plan_;
+  // The histories are kept only when the plan's own frame has the overlay (its axes come
+  // from the pre-pass then): a picture larger than that frame gets none either.
+  if (!history_) p.overlay = OverlaySwitches{false, false, false, false};
+  lay_out_frame(scene_, p, width, height);
+  return p;
 }
 
 void Session::advance(std::int64_t count) {
@@ -58,7 +66,11 @@ void Session::record() {
 }
 
 RenderSnapshot Session::snapshot() const {
-  RenderSnapshot snap = build_snapshot(sim_->state(), scene_.chain, sim_->force_now(), plan_.style);
+  return snapshot(plan_.style);
+}
+
+RenderSnapshot Session::snapshot(const SnapshotStyle& style) const {
+  RenderSnapshot snap = build_snapshot(sim_->state(), scene_.chain, sim_->force_now(), style);
   if (history_) snap.overlay = history_->share();
   return snap;
 }

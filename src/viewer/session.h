@@ -46,8 +46,13 @@ class Session {
 
   // Advances up to `count` grid frames (fewer at the end of the run or on an error).
   void advance(std::int64_t count);
-  // The current frame as `render` would draw it, with the overlay's data when it is on.
+  // The plan laid out for a frame of width x height (the window's picture beside its panels):
+  // `render`'s layout at that size (lay_out_frame), for the same run.
+  RenderPlan plan_at(int width, int height) const;
+  // The current frame as `render` would draw it, with the overlay's data when it is on; in
+  // the plan's style, or in another one (plan_at(...).style).
   RenderSnapshot snapshot() const;
+  RenderSnapshot snapshot(const SnapshotStyle& style) const;
   // phi_j(tau) of every spring so far (the hover plot).
   const PhiHistory& phi_history() const { return phi_history_; }
 

@@ -37,7 +37,13 @@ void handle_shortcuts(ViewerModel& model, SceneDesc& draft, ViewerRequests& requ
   if (pressed(GLFW_KEY_M)) requests.record = true;
   if (pressed(GLFW_KEY_TAB)) model.show_controls = !model.show_controls;
   if (pressed(GLFW_KEY_H) || pressed(GLFW_KEY_F1)) model.show_help = !model.show_help;
-  if (pressed(GLFW_KEY_ESCAPE) || pressed(GLFW_KEY_Q)) requests.quit = true;
+  if (pressed(GLFW_KEY_F11) || pressed(GLFW_KEY_F)) requests.present = model.presenting ? 0 : 1;
+  // In front of an audience Esc leaves presentation mode rather than the program.
+  if (pressed(GLFW_KEY_ESCAPE) && model.presenting) {
+    requests.present = 0;
+  } else if (pressed(GLFW_KEY_ESCAPE) || pressed(GLFW_KEY_Q)) {
+    requests.quit = true;
+  }
 }
 
 }  // namespace cb

@@ -13,6 +13,12 @@ float bead_x(const SnapshotLayout& layout, const PanelLayout& panel, const Chain
   return layout.x_wall + static_cast<float>((j + psi) * panel.spacing);
 }
 
+// y of bead j (0: the wall) in the panel, as build_snapshot places it.
+float bead_y(const PanelLayout& panel, const ChainState& state, int j) {
+  const double psi = j > 0 && panel.view == View::Transverse ? state.psi[j - 1] : 0.0;
+  return panel.centre_y - static_cast<float>(psi * panel.psi_scale);
+}
+
 }  // namespace
 
 int spring_at(const SnapshotLayout& layout, const ChainState& state, float x, float y) {
@@ -33,6 +39,17 @@ SpringSpan spring_span(const SnapshotLayout& layout, const ChainState& state, in
   const PanelLayout& p = layout.panels[panel];
   const float a = bead_x(layout, p, state, spring - 1), b = bead_x(layout, p, state, spring);
   return {std::min(a, b), std::max(a, b), p.top, p.bottom};
+}
+
+SpringBox spring_marker(const SnapshotLayout& layout, const ChainState& state, int panel,
+                        int spring, float pad) {
+  const PanelLayout& p = layout.panels[panel];
+  const float xa = bead_x(layout, p, state, spring - 1), xb = bead_x(layout, p, state, spring);
+  const float ya = bead_y(p, state, spring - 1), yb = bead_y(p, state, spring);
+  // A bead's disc, the coil's half width, or half the strain ribbon: whichever is larger.
+  const float half = std::max({p.bead_radius, 0.5f * p.spring_width, 0.5f * p.ribbon_width});
+  const float r = half + pad;
+  return {std::min(xa, xb) - r, std::min(ya, yb) - r, std::max(xa, xb) + r, std::max(ya, yb) + r};
 }
 
 }  // namespace cb

@@ -19,4 +19,13 @@ struct SpringSpan {
 SpringSpan spring_span(const SnapshotLayout& layout, const ChainState& state, int panel,
                        int spring);
 
+// The selected spring's marker in panel p: a box around spring j where it is drawn, both of
+// its beads (discs of the panel's bead radius) and the coil between them, `pad` pixels
+// beyond them, so that the outline sits on that spring and crosses none of its beads.
+struct SpringBox {
+  float x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // frame pixels, origin top-left
+};
+SpringBox spring_marker(const SnapshotLayout& layout, const ChainState& state, int panel,
+                        int spring, float pad);
+
 }  // namespace cb

@@ -8,6 +8,7 @@
 
 #include "exact/exact_chain.h"
 #include "overlay/overlay_history.h"
+#include "viewer/controls.h"
 #include "viewer/session.h"
 
 namespace cb {
@@ -29,7 +30,7 @@ void SpringPlot::update_exact(const Session& session, int spring) {
   if (!exact_tried_) {
     exact_tried_ = true;
     if (scene.chain.beads <= kExactMaxBeads && scene.drive.type != DriveType::Expr)
-      exact_ = std::make_unique<ExactChain>(scene.chain.beads, scene.chain.gamma, scene.drive);
+      exact_ = std::make_unique<ExactChain>(scene.chain, scene.drive);
   }
   if (!exact_) return;
   const PhiHistory& h = session.phi_history();
@@ -44,13 +45,17 @@ void SpringPlot::update_exact(const Session& session, int spring) {
     exact_values_.push_back(static_cast<float>(exact_->phi(spring, h.tau(row))));
 }
 
-void SpringPlot::draw(const Session& session, int spring) {
+bool SpringPlot::shows(const Session& session, int spring) {
+  return spring >= 1 && spring <= session.scene().chain.beads && session.phi_history().rows() > 0;
+}
+
+void SpringPlot::draw(const Session& session, int spring, const PixelRect& rect) {
   const PhiHistory& h = session.phi_history();
-  if (spring < 1 || spring > session.scene().chain.beads || h.rows() == 0) return;
+  if (!shows(session, spring) || rect.empty()) return;
   update_exact(session, spring);
 
-  const double phi_c = session.scene().chain.threshold;
-  const bool breakable = session.scene().chain.breakable();
+  const double phi_c = session.scene().chain.threshold_of(spring);  // this spring's own
+  const bool breakable = std::isfinite(phi_c);
   float lo = 0.0f, hi = 0.0f;
   for (std::size_t r = 0; r < h.rows(); ++r)
     if (std::isfinite(h.phi(spring, r))) {
@@ -65,11 +70,15 @@ void SpringPlot::draw(const Session& session, int spring) {
   // The time axis grows with the run (0 to now): the whole video's span would squeeze the
   // early part a lecturer is looking at into a sliver.
   const double tau_end = std::max(h.tau(h.rows() - 1), session.plan().grid.tau_per_frame());
-  const ImGuiIO& io = ImGui::GetIO();
-  ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - 470, 10), ImGuiCond_FirstUseEver);
-  ImGui::Begin("Spring", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
-  ImGui::Text("spring %d: phi(tau)  (dots: RK4, line: exact, dashed: +-phi_c)", spring);
-  const ImVec2 size(440, 200);
+  dock_next_window(rect);
+  ImGui::Begin("Spring", nullptr, kDockedWindow);
+  ImGui::TextWrapped("spring %d: phi(tau)  (dots: RK4, line: exact, dashed: +-phi_c)", spring);
+  // The plot takes the panel's width and what its three text lines leave of its height.
+  const float line = ImGui::GetTextLineHeightWithSpacing();
+  const ImVec2 room = ImGui::GetContentRegionAvail();
+  const ImVec2 size(std::max(room.x, 1.0f), std::max(room.y - 2.2f * line, line));
+  const float dot = 1.8f * ImGui::GetFontSize() / 17.0f,
+              width = 2.0f * ImGui::GetFontSize() / 17.0f;
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   ImGui::Dummy(size);
   ImDrawList* draw = ImGui::GetWindowDrawList();
@@ -89,12 +98,12 @@ void SpringPlot::draw(const Session& session, int spring) {
   // The exact line under the RK4 points, in the overlay's colours (overlay.h).
   for (std::size_t r = 1; r < exact_values_.size(); ++r)
     draw->AddLine(ImVec2(px(h.tau(r - 1)), py(exact_values_[r - 1])),
-                  ImVec2(px(h.tau(r)), py(exact_values_[r])), IM_COL32(86, 180, 233, 150), 2.0f);
+                  ImVec2(px(h.tau(r)), py(exact_values_[r])), IM_COL32(86, 180, 233, 150), width);
   const std::size_t step = std::max<std::size_t>(1, h.rows() / 400);  // ~400 points at most
   for (std::size_t r = 0; r < h.rows(); r += step) {
     const float phi = h.phi(spring, r);
     if (std::isfinite(phi))
-      draw->AddCircleFilled(ImVec2(px(h.tau(r)), py(phi)), 1.8f, IM_COL32(240, 228, 66, 255));
+      draw->AddCircleFilled(ImVec2(px(h.tau(r)), py(phi)), dot, IM_COL32(240, 228, 66, 255));
   }
   const float now = h.phi(spring, h.rows() - 1);
   if (std::isfinite(now)) {
@@ -104,8 +113,8 @@ void SpringPlot::draw(const Session& session, int spring) {
       if (b.spring == spring) ImGui::Text("broke at tau = %.3f", b.tau);
   }
   ImGui::SameLine();
-  ImGui::Text("  range [%.3g, %.3g]%s", lo, hi,
-              exact_ ? "" : "   (no exact line: N > 1024 or an expression drive)");
+  ImGui::TextWrapped("  range [%.3g, %.3g]%s", lo, hi,
+                     exact_ ? "" : "  (no exact line: N > 1024 or an expression drive)");
   ImGui::End();
 }
 

@@ -6,6 +6,8 @@
 #include <memory>
 #include <vector>
 
+#include "viewer/dock_layout.h"
+
 namespace cb {
 
 class ExactChain;
@@ -17,8 +19,10 @@ class SpringPlot {
   ~SpringPlot();
   // Call after Session::restart: the exact tables belong to the previous run.
   void reset();
-  // Draws the window for `spring` (0: nothing).
-  void draw(const Session& session, int spring);
+  // Whether draw() shows a window for `spring` (0: none; a spring of the chain).
+  static bool shows(const Session& session, int spring);
+  // Draws the window for `spring`, docked at `rect` (dock_layout.h).
+  void draw(const Session& session, int spring, const PixelRect& rect);
 
  private:
   void update_exact(const Session& session, int spring);

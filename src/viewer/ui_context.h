@@ -5,7 +5,10 @@
 // the two never see each other's state.
 #pragma once
 
+#include <string>
+
 #include "theme/theme.h"
+#include "viewer/dock_layout.h"
 
 struct GLFWwindow;
 struct ImGuiContext;
@@ -20,12 +23,21 @@ class UiContext {
   UiContext(const UiContext&) = delete;
   UiContext& operator=(const UiContext&) = delete;
 
+  // The panels' size (dock_layout.h): before begin_frame; a new scale re-rasterises the font.
+  void set_scale(const UiScale& scale);
+  const UiScale& scale() const { return scale_; }
   void begin_frame();  // makes this context current, polls nothing (the caller polls events)
   void end_frame();    // renders the widgets into the bound (default) framebuffer
 
  private:
+  void style();  // the theme's colours, sizes times the scale
+
   ImGuiContext* context_ = nullptr;
   bool platform_ = false, renderer_ = false;
+  ThemeName theme_;
+  std::string font_;
+  UiScale scale_;
+  long frames_ = 0;
 };
 
 }  // namespace cb

@@ -1,5 +1,5 @@
-// The viewer's loop (viewer.h). Index: the Viewer (requests, physics, outputs, the copy into
-// the window, one frame); run_viewer.
+// The viewer's loop (viewer.h). Index: Picture (the frame at the picture's size); the Viewer
+// (requests, physics, outputs, the copy into the window, one frame); run_viewer.
 #include "viewer/viewer.h"
 
 #include <imgui.h>
@@ -16,8 +16,9 @@
 #include "overlay/overlay.h"
 #include "render/renderer.h"
 #include "viewer/controls.h"
-#include "viewer/frame_placement.h"
+#include "viewer/dock_layout.h"
 #include "viewer/frame_times.h"
+#include "viewer/layout_report.h"
 #include "viewer/pacer.h"
 #include "viewer/script.h"
 #include "viewer/script_actions.h"
@@ -32,6 +33,41 @@ namespace cb {
 
 namespace {
 
+// The window's picture: `render`'s frame laid out at the size the docked panels leave free
+// (Session::plan_at: the same layout code, given that rectangle), with a renderer and an
+// overlay of that size. Laid out again when the size changes, and when the run or the view
+// does (the layout follows them).
+struct Picture {
+  int width = 0, height = 0;
+  long epoch = -1;  // Viewer::layout_epoch it was laid out for
+  SnapshotStyle style;
+  std::unique_ptr<Renderer> renderer;
+  std::unique_ptr<Overlay> overlay;
+
+  void fit(const Session& session, int w, int h, long layout_epoch) {
+    if (w == width && h == height && epoch == layout_epoch) return;
+    const RenderPlan plan = session.plan_at(w, h);
+    style = plan.style;
+    epoch = layout_epoch;
+    if (w != width || h != height || !renderer) {
+      // The old one first: two 4K framebuffers at once are not needed.
+      renderer.reset();
+      renderer = std::make_unique<Renderer>(w, h);
+      width = w;
+      height = h;
+      overlay.reset();
+    }
+    const bool want_overlay = plan.overlay_layout.enabled;
+    if (!want_overlay) overlay.reset();
+    if (want_overlay && !overlay)
+      overlay = std::make_unique<Overlay>(w, h, plan.frame.fps, plan.overlay, plan.style.theme);
+  }
+};
+
+// The hint presentation mode shows for its first seconds: how to get the help back.
+constexpr double kHintSeconds = 5.0;
+constexpr const char* kHintText = "H: help   F11 or Esc: leave presentation";
+
 struct Viewer {
   const ViewerOptions& options;
   Window& window;
@@ -39,13 +75,17 @@ struct Viewer {
   SceneDesc draft;
   ViewerModel model;
   UiContext ui;
-  Renderer renderer;
-  std::unique_ptr<Overlay> overlay;
+  Picture picture;        // what the window shows
+  Picture output;         // snapshots and recordings: the plan's own frame (the video's size)
+  long layout_epoch = 0;  // bumped when the run or the view changes the layout
   ViewerOutputs outputs;
   SpringPlot plot;
   Pacer pacer;
   std::optional<ScriptPlayer> script;
   std::int64_t display_frame = 0;
+  int pending_present = -1;  // F11 / F / Esc of the last frame (ViewerRequests::present)
+  double presenting_since = 0.0;
+  std::int64_t presenting_since_frame = 0;
   int script_failures = 0;  // script actions that failed (set_status)
   double grid_carry = 0.0;  // fixed steps: grid frames owed to the next displayed frame
   FrameTimes times;
@@ -57,14 +97,10 @@ struct Viewer {
         session(scene, o.render),
         draft(session.scene()),
         ui(w.handle(), session.plan().style.theme),
-        renderer(session.plan().frame.width, session.plan().frame.height),
         outputs(o.out_dir, scene.name) {
     const RenderPlan& p = session.plan();
     draft.render.view = p.frame.view;  // --view, when given, over the scene's
     draft.render.theme = p.frame.theme;
-    if (p.overlay_layout.enabled)
-      overlay = std::make_unique<Overlay>(p.frame.width, p.frame.height, p.frame.fps, p.overlay,
-                                          p.style.theme);
     if (!o.script.empty()) script.emplace(std::move(actions));
     fixed_step = script || o.benchmark_frames > 0;
     model.script = fixed_step;
@@ -131,8 +167,12 @@ struct Viewer {
     if (r.apply_settings || r.restart) {
       restart(r.apply_settings);
       r.speed_changed = true;
+      ++layout_epoch;  // the run's extent, and so the layout, may have changed
     }
-    if (r.view_changed) session.set_view(draft.render.view);
+    if (r.view_changed) {
+      session.set_view(draft.render.view);
+      ++layout_epoch;
+    }
     if (r.speed_changed)
       pacer.reset(Window::now(), session.frame(), model.speed, session.plan().grid.tau_per_frame());
     if (r.step > 0) {
@@ -182,35 +222,79 @@ struct Viewer {
     model.achieved_ratio = pacer.achieved_ratio();
   }
 
-  // Hover and click: the spring under the mouse, in the frame's pixels.
-  void pick(const RenderSnapshot& snap, const FramePlacement& place) {
+  // Hover and click: the spring under the mouse, in the picture's pixels. A script selects
+  // with `select`: the pointer (wherever the X server left it) plays no part.
+  void pick(const RenderSnapshot& snap, const PixelRect& at) {
     const ImGuiIO& io = ImGui::GetIO();
     model.hovered_spring = 0;
-    if (io.WantCaptureMouse) return;
-    const float x = place.frame_x(io.MousePos.x * io.DisplayFramebufferScale.x);
-    const float y = place.frame_y(io.MousePos.y * io.DisplayFramebufferScale.y);
+    if (io.WantCaptureMouse || script) return;
+    const float x = io.MousePos.x * io.DisplayFramebufferScale.x - static_cast<float>(at.x);
+    const float y = io.MousePos.y * io.DisplayFramebufferScale.y - static_cast<float>(at.y);
+    if (x < 0 || y < 0 || x >= static_cast<float>(at.w) || y >= static_cast<float>(at.h)) return;
     model.hovered_spring = spring_at(snap.layout, session.state(), x, y);
     if (ImGui::IsMouseClicked(0)) model.pinned_spring = model.hovered_spring;
   }
 
-  // A frame around the plotted spring, on the window only (snapshots and videos stay clean).
-  void highlight(const RenderSnapshot& snap, const FramePlacement& place, int spring) {
-    if (spring < 1 || spring > static_cast<int>(session.state().psi.size())) return;
-    const ImVec2 to_ui(1.0f / ImGui::GetIO().DisplayFramebufferScale.x,
-                       1.0f / ImGui::GetIO().DisplayFramebufferScale.y);
+  // A frame around the plotted spring, on the window only (snapshots and videos stay clean):
+  // on the spring in each chain panel, clipped to the picture. The first panel's, in window
+  // pixels, for the layout report.
+  std::optional<SpringBox> highlight(const RenderSnapshot& snap, const PixelRect& at, int spring) {
+    if (spring < 1 || spring > static_cast<int>(session.state().psi.size())) return std::nullopt;
+    const ImVec2 fb = ImGui::GetIO().DisplayFramebufferScale;
+    const float line = std::max(2.0f, std::round(2.0f * ui.scale().pixel));
+    ImDrawList* draw = ImGui::GetBackgroundDrawList();
+    draw->PushClipRect(ImVec2(at.x / fb.x, at.y / fb.y),
+                       ImVec2(at.right() / fb.x, at.bottom() / fb.y), true);
+    std::optional<SpringBox> first;
     for (int p = 0; p < snap.layout.panel_count; ++p) {
-      const SpringSpan s = spring_span(snap.layout, session.state(), p, spring);
-      const float pad = 3.0f;
-      ImGui::GetBackgroundDrawList()->AddRect(
-          ImVec2(place.window_x(s.x0) * to_ui.x - pad, place.window_y(s.top) * to_ui.y),
-          ImVec2(place.window_x(s.x1) * to_ui.x + pad, place.window_y(s.bottom) * to_ui.y),
-          IM_COL32(240, 228, 66, 200), 3.0f, 0, 2.0f);
+      SpringBox b = spring_marker(snap.layout, session.state(), p, spring, line + 2.0f);
+      b = {b.x0 + at.x, b.y0 + at.y, b.x1 + at.x, b.y1 + at.y};
+      if (!first) first = b;
+      draw->AddRect(ImVec2(b.x0 / fb.x, b.y0 / fb.y), ImVec2(b.x1 / fb.x, b.y1 / fb.y),
+                    IM_COL32(240, 228, 66, 220), 3.0f * ui.scale().pixel / fb.x, 0, line / fb.x);
     }
+    draw->PopClipRect();
+    return first;
+  }
+
+  // Presentation mode's hint, for its first seconds (display frames at the scene's rate in a
+  // script, so that a script sees the same frames on any machine): small, at the picture's
+  // top right, where the chain panel has only its margin.
+  std::optional<PixelRect> hint(const PixelRect& at) {
+    if (!model.presenting) return std::nullopt;
+    const double shown = fixed_step
+                             ? (display_frame - presenting_since_frame) / session.plan().frame.fps
+                             : Window::now() - presenting_since;
+    if (shown > kHintSeconds) return std::nullopt;
+    const ImVec2 fb = ImGui::GetIO().DisplayFramebufferScale;
+    const ImVec2 text = ImGui::CalcTextSize(kHintText);
+    const float pad = 6.0f * ui.scale().pixel;
+    const PixelRect r{static_cast<int>(at.right() - text.x * fb.x - 3 * pad),
+                      static_cast<int>(at.y + pad), static_cast<int>(text.x * fb.x + 2 * pad),
+                      static_cast<int>(text.y * fb.y + 2 * pad)};
+    ImDrawList* draw = ImGui::GetForegroundDrawList();
+    draw->AddRectFilled(ImVec2(r.x / fb.x, r.y / fb.y), ImVec2(r.right() / fb.x, r.bottom() / fb.y),
+                        IM_COL32(0, 0, 0, 150), 4.0f);
+    draw->AddText(ImVec2((r.x + pad) / fb.x, (r.y + pad) / fb.y), IM_COL32(230, 230, 230, 255),
+                  kHintText);
+    return r;
   }
 
   // Snapshot and recording: the frame's pixels, from the renderer's framebuffer; as RGBA
   // only when a snapshot or a GIF needs it, Y'CbCr for an MP4 or WebM recording.
   void write_outputs(const ViewerRequests& r) {
+    // The plan's frame, the video's size: the picture's own pixels when it has that size
+    // (panels hidden, the window at the frame's size), else drawn again at that size.
+    const RenderPlan& plan = session.plan();
+    Renderer* frame = picture.renderer.get();
+    if (picture.width != plan.frame.width || picture.height != plan.frame.height) {
+      output.fit(session, plan.frame.width, plan.frame.height, layout_epoch);
+      const RenderSnapshot snap = session.snapshot(output.style);
+      output.renderer->draw(snap);
+      if (output.overlay) output.overlay->draw(snap);
+      frame = output.renderer.get();
+    }
+    Renderer& renderer = *frame;
     std::optional<Image> rgba;
     const auto image = [&]() -> Image& {
       if (!rgba) renderer.read(rgba.emplace());
@@ -240,60 +324,106 @@ struct Viewer {
     model.recording = outputs.recording();
   }
 
-  // The renderer's framebuffer into the window's, where `place` puts it.
-  void copy_to_window(unsigned source, const FramePlacement& place) {
+  // The picture's framebuffer into the window's, 1:1 at its rectangle. llvmpipe pays per
+  // pixel written to the window (tests/bench/README.md): only the rest of the window (the
+  // panels' column, which their windows then cover) is cleared, through the scissor box.
+  void copy_to_window(unsigned source, const PixelRect& at, const PixelRect& window_rect) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, source);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    glDisable(GL_SCISSOR_TEST);
-    // llvmpipe pays per pixel: clear only the bars around a letterboxed frame, and copy 1:1
-    // without filtering when the window has the frame's size.
-    if (!place.fills_window()) {
+    const int window_height = window_rect.h;
+    if (at.right() < window_rect.right()) {
+      glEnable(GL_SCISSOR_TEST);
+      glScissor(at.right(), 0, window_rect.right() - at.right(), window_height);
       glClearColor(0, 0, 0, 1);
       glClear(GL_COLOR_BUFFER_BIT);
     }
-    const int bottom = place.gl_bottom();
-    glBlitFramebuffer(0, 0, place.frame_width, place.frame_height, place.x, bottom,
-                      place.x + place.width, bottom + place.height, GL_COLOR_BUFFER_BIT,
-                      place.one_to_one() ? GL_NEAREST : GL_LINEAR);
+    glDisable(GL_SCISSOR_TEST);
+    const int bottom = window_height - at.bottom();  // GL's rows count from the bottom
+    glBlitFramebuffer(0, 0, at.w, at.h, at.x, bottom, at.x + at.w, bottom + at.h,
+                      GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  }
+
+  // Presentation mode and the window's size, asked for by the last frame's keys or this
+  // frame's script: before the frame measures the window.
+  void apply_window(ViewerRequests& r) {
+    if (r.resize_width > 0) window.resize(r.resize_width, r.resize_height);
+    if (pending_present >= 0 && r.present < 0) r.present = pending_present;
+    pending_present = -1;
+    if (r.present < 0 || (r.present == 1) == model.presenting) return;
+    model.presenting = r.present == 1;
+    window.set_fullscreen(model.presenting);
+    presenting_since = Window::now();
+    presenting_since_frame = display_frame;
   }
 
   void frame(double frame_start) {
     window.poll();
     ViewerRequests r;
     if (script) apply_script(script->take(display_frame), draft, model, r);
+    apply_window(r);
+    int fb_w = 0, fb_h = 0, win_w = 0, win_h = 0;
+    window.framebuffer_size(fb_w, fb_h);
+    window.window_size(win_w, win_h);
+    ui.set_scale(ui_scale(window.content_scale(), options.ui_scale, win_w, fb_w));
     ui.begin_frame();
-    draw_controls(model, draft, session, r);
-    draw_help(model);
+    const bool panels = model.show_controls && !model.presenting;
+    const int plotted = model.hovered_spring ? model.hovered_spring : model.pinned_spring;
+    const DockLayout dock =
+        dock_layout(fb_w, fb_h, ui.scale().pixel, panels, SpringPlot::shows(session, plotted));
+    draw_controls(model, draft, session, r, dock.controls);
+    draw_help(model, dock.picture);
     handle_shortcuts(model, draft, r);
+    pending_present = r.present;  // the window changes at the next frame's start
+    r.present = -1;
     apply(r);
     advance_physics();
     const double physics_done = Window::now();
 
-    const RenderSnapshot snap = session.snapshot();
-    int fb_w = 0, fb_h = 0;
-    window.framebuffer_size(fb_w, fb_h);
-    const FramePlacement place = place_frame(renderer.width(), renderer.height(), fb_w, fb_h);
+    // A minimised window has no pixels: the physics goes on, nothing is drawn.
+    if (fb_w <= 0 || fb_h <= 0) {
+      ui.end_frame();
+      window.swap();
+      ++display_frame;
+      return;
+    }
+    picture.fit(session, dock.picture.w, dock.picture.h, layout_epoch);
+    const RenderSnapshot snap = session.snapshot(picture.style);
     // Drawn off screen, then copied into the window. Drawing straight into the window's
     // framebuffer (tried: a Renderer::draw_into) was slower on llvmpipe under Xvfb, 17 ms
     // against 5 ms for the drawing, more than the ~6 ms copy it saves.
-    renderer.draw(snap);  // binds the renderer's framebuffer, where the overlay draws too
-    if (overlay) overlay->draw(snap);
+    picture.renderer->draw(snap);  // binds the renderer's framebuffer, where the overlay draws too
+    if (picture.overlay) picture.overlay->draw(snap);
     // Wait for the software rasteriser here: its threads then do not compete with this one's
     // next work (tests/bench/README.md). It also puts the drawing in the draw phase.
     glFinish();
     const double draw_done = Window::now();
-    GLint frame_buffer = 0;
+    GLint frame_buffer = 0;  // the picture's (Renderer::draw leaves it bound)
     glGetIntegerv(GL_FRAMEBUFFER_BINDING, &frame_buffer);
     if (r.snapshot || r.record || outputs.recording()) write_outputs(r);
-    copy_to_window(static_cast<unsigned>(frame_buffer), place);
+    copy_to_window(static_cast<unsigned>(frame_buffer), dock.picture, dock.window);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, fb_w, fb_h);
 
-    pick(snap, place);
-    const int plotted = model.hovered_spring ? model.hovered_spring : model.pinned_spring;
-    highlight(snap, place, plotted);
-    plot.draw(session, plotted);
+    pick(snap, dock.picture);
+    // Hidden panels leave the picture alone, as on the video: no marker either.
+    const std::optional<SpringBox> marker = highlight(snap, dock.picture, panels ? plotted : 0);
+    plot.draw(session, plotted, dock.plot);
+    const std::optional<PixelRect> hint_box = hint(dock.picture);
     ui.end_frame();
+    if (!r.layout_path.empty()) {
+      LayoutFacts facts;
+      facts.tau = session.tau();
+      facts.frame = display_frame;
+      facts.dock = &dock;
+      facts.snapshot = &snap;
+      facts.scale = ui.scale();
+      facts.font_px = ImGui::GetFontSize() * ImGui::GetIO().DisplayFramebufferScale.y;
+      facts.panels = panels;
+      facts.presenting = model.presenting;
+      facts.marker = marker;
+      facts.hint = hint_box;
+      set_status(outputs.write_text(layout_json(facts), r.layout_path, "layout"));
+    }
     if (!r.screenshot_path.empty())
       set_status(outputs.snapshot(window.read_back_buffer(), session.tau(), r.screenshot_path));
     window.swap();
@@ -332,7 +462,7 @@ int run_viewer(const ViewerOptions& o) {
     window.framebuffer_size(fb_w, fb_h);
     // The first frames pay for shader compilation and the font atlas: left out.
     std::printf("{\"width\":%d,\"height\":%d,\"window\":\"%dx%d\",\"beads\":%d,%s}\n",
-                viewer.renderer.width(), viewer.renderer.height(), fb_w, fb_h,
+                viewer.picture.width, viewer.picture.height, fb_w, fb_h,
                 viewer.session.scene().chain.beads, viewer.times.report(10).c_str());
   }
   if (!viewer.session.error().empty()) {

@@ -1,8 +1,9 @@
-// The real-time viewer (issue #6): a window with the renderer and overlay of the videos and
-// Dear ImGui controls over them. Each displayed frame: read input (person or script), apply
-// the requests, advance the physics by the pacer (or a fixed tau per frame in script and
-// benchmark modes), draw the frame into the renderer's framebuffer, copy it scaled into the
-// window, draw the controls on top.
+// The real-time viewer (issue #6): a window with the renderer and overlay of the videos and,
+// docked beside them, Dear ImGui controls (issue #27: never over the chain). Each displayed
+// frame: read input (person or script), apply the requests, advance the physics by the pacer
+// (or a fixed tau per frame in script and benchmark modes), lay out the window (dock_layout.h),
+// draw `render`'s frame at the picture's size into the renderer's framebuffer, copy it 1:1
+// into the window, draw the panels beside it.
 #pragma once
 
 #include <atomic>
@@ -22,7 +23,8 @@ struct ViewerOptions {
   std::string script;    // --script FILE (script.h)
   std::int64_t benchmark_frames = 0;  // > 0: play this many frames flat out, print timings
   std::string out_dir = "renders";
-  bool play = false;  // start playing
+  bool play = false;      // start playing
+  float ui_scale = 1.0f;  // --ui-scale: the panels' size, times the window's content scale
   // Set by a signal handler (Ctrl-C): the loop ends as if the window were closed, so a video
   // being recorded is finished, not left as a temporary file.
   const std::atomic<bool>* stop = nullptr;

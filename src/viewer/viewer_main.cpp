@@ -44,6 +44,10 @@ int main(int argc, char** argv) {
                  "Overlay parts: hud,plots,spacetime,modes, all, none")
       ->excludes(no_overlay);
   app.add_flag("--play", o.play, "Start playing at once");
+  app.add_option("--ui-scale", o.ui_scale,
+                 "Panel size (text and controls) times the window's content scale, e.g. 1.5 "
+                 "for a projector")
+      ->check(CLI::Range(0.5, 4.0));
   app.add_option("-o,--out-dir", o.out_dir, "Folder for snapshots, videos and saved scenes");
   app.add_option("--script", o.script,
                  "Drive the window from a file of timed actions (README: the viewer's script "

@@ -15,7 +15,8 @@ struct ViewerModel {
   bool playing = false;
   double speed = 10.0;  // tau per second of wall time (script mode: per 1/fps of a frame)
   bool show_help = false;
-  bool show_controls = true;  // Tab hides them: the chain alone, as on the video
+  bool show_controls = true;  // the docked panels; Tab hides them: the chain alone, as on the video
+  bool presenting = false;    // presentation mode: fullscreen, panels hidden (F11 or F)
   int hovered_spring = 0;     // under the mouse (0: none)
   int pinned_spring = 0;      // clicked, or `select` in a script; the plot shows it before hover
   bool recording = false;
@@ -36,6 +37,9 @@ struct ViewerRequests {
   bool snapshot = false, save = false, record = false, quit = false;  // record: start or stop
   std::string snapshot_path, save_path, record_path;                  // empty: a name in --out-dir
   std::string screenshot_path;  // script only: the whole window
+  std::string layout_path;      // script only: where everything went, as JSON (script.h)
+  int resize_width = 0, resize_height = 0;  // script only: > 0, the window's new size
+  int present = -1;                         // presentation mode: 1 enter, 0 leave, -1 no change
 };
 
 }  // namespace cb

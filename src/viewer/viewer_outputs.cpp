@@ -52,6 +52,18 @@ std::string ViewerOutputs::save(const SceneDesc& scene, const std::string& path)
   return "wrote " + target;
 }
 
+std::string ViewerOutputs::write_text(const std::string& text, const std::string& path,
+                                      const char* what) {
+  try {
+    OutputFile out(path);
+    out.write(text);
+    out.commit();
+  } catch (const OutputError& e) {
+    return std::string(what) + " failed: " + e.what();
+  }
+  return "wrote " + path;
+}
+
 std::string ViewerOutputs::start_recording(int width, int height, int fps, const std::string& path,
                                            bool real_time) {
   if (video_) return "already recording " + video_path_;

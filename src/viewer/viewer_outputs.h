@@ -27,6 +27,8 @@ class ViewerOutputs {
   // cause (an unwritable folder) are caught and returned as the status, not thrown.
   std::string snapshot(const Image& frame, double tau, const std::string& path);
   std::string save(const SceneDesc& scene, const std::string& path);
+  // `text` into `path` (the script's `layout`); `what` names it in the status line.
+  std::string write_text(const std::string& text, const std::string& path, const char* what);
   // Starts a video of frames of this size at `fps` frames per second. `real_time`: frames
   // are written by wall time (record_clock.h), so the video plays at the speed the session
   // was shown; otherwise (script mode) one video frame per displayed frame.

@@ -33,12 +33,24 @@ class Window {
   void swap();
   // The drawable size in pixels (may differ from the window's size on high-DPI screens).
   void framebuffer_size(int& width, int& height) const;
+  // The window's size in screen coordinates (Dear ImGui's units).
+  void window_size(int& width, int& height) const;
+  // How large the desktop wants UI drawn here (glfwGetWindowContentScale, horizontal): 1 on
+  // a plain screen, 2 on a HiDPI one.
+  float content_scale() const;
+  // As a person dragging the window's corner would leave it (the script's `resize`).
+  void resize(int width, int height);
+  // Fullscreen on the window's monitor (the primary one when unknown), or back to the window
+  // it was; nothing when already so.
+  void set_fullscreen(bool on);
   static double now();  // seconds, monotonic
   // What the window shows, controls included: the back buffer, read before swap().
   Image read_back_buffer() const;
 
  private:
   GLFWwindow* window_ = nullptr;
+  bool fullscreen_ = false;
+  int windowed_[4] = {0, 0, 0, 0};  // x, y, width, height before fullscreen
 };
 
 }  // namespace cb

@@ -49,11 +49,22 @@ put("fuzz_scene", K_BASE.replace("beads = 30", "beads = 2147483647"), "issue12_r
 put("fuzz_scene", K_BASE.replace("gamma = 0.0", "gamma = 200").replace("dt = 0.01\n", ""),
     "issue12_row12_no_dt")
 
+# Issue #21's chain arrays and patterns, and issue #23's drawn thresholds.
+for chain in ("mass = [1, 2, 1, 1]", "mass = { value = 4.0, at = 2 }",
+              "stiffness = { value = 4.0, from = 2, to = 3 }",
+              "stiffness = { from_value = 1.0, to_value = 2.0 }",
+              "threshold = { base = 1.0, value = 0.5, at = 3 }",
+              "threshold = 3.0\nthreshold_dist = \"weibull\"\nthreshold_shape = 6.0\nseed = 1",
+              "threshold = 3.0\nthreshold_dist = \"normal\"\nthreshold_shape = 0.5\nseed = 7"):
+    put("fuzz_scene", K_BASE.replace("beads = 30", "beads = 4\n" + chain))
+
 # --set lines (one override a line).
 for lines in ("chain.gamma=0.01", "drive.type=step\ndrive.amplitude=1", "chain.threshold=2.5",
               "drive.times=[0, 30]", 'drive.expr="sin(t)"\ndrive.type=expr', "title=x",
               "integrator.after_break=20", "units.mass=0.05\nunits.stiffness=200",
-              "render.size=1"):
+              "render.size=1", "chain.mass=[1, 2]", "chain.stiffness={ value = 2, at = 30 }",
+              "chain.threshold={ base = 1, value = 0.5, from = 3 }",
+              "chain.threshold_dist=weibull\nchain.threshold_shape=3\nchain.seed=5"):
     put("fuzz_set", lines)
 put("fuzz_set", base64.b64decode("ZHJpdmUudGltZXM9WzEuMCwgzoVpdgI="), "issue12_row7_unreachable")
 

@@ -1,0 +1,39 @@
+// Internal to src/scene: thresholds of a flawed chain drawn at random (issue #23's scene keys
+// chain.threshold_dist, chain.threshold_shape, chain.seed).
+//
+// Design note: a threshold decides where a chain breaks, so the same seed must give the same
+// thresholds on every machine, compiler, standard library and thread count. The std::
+// distributions differ between standard libraries, and a sequential engine ties spring j's
+// value to how many draws came before it. So each spring's uniform number is a hash of
+// (seed, spring) alone (a counter-based generator: SplitMix64's finaliser, applied twice), and
+// the inverse CDFs are written here.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace cb::scene_detail {
+
+enum class ThresholdDist { Weibull, Normal };
+
+// Drawing costs a few transcendental functions per spring, three times per scene read and
+// written (the reader, the writer's check, the reader again): 10^6 springs take about a second
+// under the sanitizers, where the fuzzers allow 10. Flawed chains are ensembles of short chains.
+inline constexpr int kMaxDrawnBeads = 1'000'000;
+
+// A uniform number in (0, 1), never 0 or 1: 53 random bits of hash(seed, index), centred.
+double uniform_open01(std::uint64_t seed, std::uint64_t index);
+
+// Weibull of modulus `shape` and scale 1: F(x) = 1 - exp(-x^shape), x = (-ln(1 - u))^(1/shape).
+double weibull_quantile(double u, double shape);
+
+// The standard normal's inverse CDF, Phi^-1(p) for p in (0, 1), to a few ulps (Newton's
+// iteration on Phi(x) = erfc(-x / sqrt 2) / 2).
+double normal_quantile(double p);
+
+// phi_c,j for spring j = 1..n: scale x Weibull(shape), or scale x (1 + shape z) with z a
+// standard normal truncated where 1 + shape z > 0 (shape: the relative standard deviation).
+std::vector<double> draw_thresholds(ThresholdDist dist, double scale, double shape,
+                                    std::uint64_t seed, int n);
+
+}  // namespace cb::scene_detail
