@@ -67,6 +67,9 @@ void WebSession::replace(SceneDesc scene, std::string text, std::string path,
   setup.energy_max = extent.energy_max;
   setup.strain_scale = scene.chain.breakable() ? scene.chain.threshold : extent.strain_range;
   setup.exact = scene.chain.beads <= kExactMaxBeads;
+#if defined(CHAINBREAK_NO_LAPACK)
+  setup.exact = setup.exact && scene.chain.uniform_dynamics();  // unequal: LAPACK's modes
+#endif
   auto sim = std::make_unique<Integrator>(scene.chain, make_forcing(scene.drive),
                                           IntegratorOptions{dt, 1});
   scene_ = std::move(scene);
@@ -83,8 +86,14 @@ void WebSession::replace(SceneDesc scene, std::string text, std::string path,
 }
 
 void WebSession::start_history() {
-  history_ = std::make_unique<OverlayHistory>(scene_.chain, scene_.drive, setup_);
-  history_->record(0, sim_->state(), sim_->force_now());
+  // A chain whose plots need what the page lacks (an unequal chain's modes need LAPACK) is
+  // shown and run without them.
+  try {
+    history_ = std::make_unique<OverlayHistory>(scene_.chain, scene_.drive, setup_);
+    history_->record(0, sim_->state(), sim_->force_now());
+  } catch (const std::exception&) {
+    history_.reset();
+  }
 }
 
 void WebSession::restart() {
@@ -116,10 +125,13 @@ bool WebSession::advance_to(std::int64_t step) {
   // `run`'s own stop rule (t_end, after_break past the first break), capped at `step`.
   const StopRule stop{std::min(step, planned_steps(scene_)), scene_.integrator.after_break, false,
                       nullptr};
-  const Observer plots{frame_steps_, false, [this](const Integrator& s) {
-                         history_->record(s.state().step / frame_steps_, s.state(), s.force_now());
-                       }};
-  if (run_until(*sim_, stop, {plots}) == RunEnd::Failed) {
+  std::vector<Observer> observers;
+  if (history_)
+    observers.push_back({frame_steps_, false, [this](const Integrator& s) {
+                           history_->record(s.state().step / frame_steps_, s.state(),
+                                            s.force_now());
+                         }});
+  if (run_until(*sim_, stop, observers) == RunEnd::Failed) {
     error_ = sim_->error();
     return false;
   }
@@ -157,7 +169,7 @@ RenderSnapshot WebSession::snapshot(int width, int height, const std::string& th
   o.view = view;
   SnapshotStyle style = snapshot_style(scene_, frame_settings(scene_, o), extent_);
   const OverlayLayout layout = overlay_layout(width, height, web_plot_switches());
-  plots = plots && layout.enabled;
+  plots = plots && layout.enabled && history_;
   if (plots) style.chain_height = layout.chain_height;
   RenderSnapshot snap = build_snapshot(sim_->state(), scene_.chain, sim_->force_now(), style);
   if (plots)
