@@ -142,11 +142,12 @@ const WebBreakMap& WebSession::break_map() const {
   if (break_map_) return *break_map_;
   WebBreakMap map;
   const ChainParams& c = scene_.chain;
-  // The map is the paper's for a ramp on the uniform chain of the abs rule; a long chain's
+  // The map is the paper's for a ramp on the uniform chain (equal beads, springs and
+  // thresholds) under the abs rule; a long chain's
   // exact first breaks would hold the page too long.
   if (scene_.drive.type == DriveType::Ramp && c.breakable() && c.uniform_thresholds() &&
-      c.break_on == BreakMode::Abs && !c.pull_string && c.beads <= kMapMaxBeads &&
-      scene_.drive.beta > 0) {
+      c.uniform_dynamics() && c.break_on == BreakMode::Abs && !c.pull_string &&
+      c.beads <= kMapMaxBeads && scene_.drive.beta > 0) {
     map.beads = c.beads;
     map.current = c.threshold / scene_.drive.beta;
     const double hi = std::max(1.5 * map.current, 6.0 * c.beads);
