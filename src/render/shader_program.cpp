@@ -17,8 +17,16 @@ const char* shader_source(std::string_view name) {
 
 namespace shader {
 
+// The version line is chosen at build time: OpenGL 3.3 core for the program, GLSL ES 3.00 for
+// the page's WebGL2 (src/web), where floats need a stated precision. The shaders are the same.
+#if defined(CHAINBREAK_GLSL_ES)
+#define CB_GLSL_VERSION "#version 300 es\nprecision highp float;\nprecision highp int;\n"
+#else
+#define CB_GLSL_VERSION "#version 330 core\n"
+#endif
+
 const char* preamble() {
-  return "#version 330 core\n"
+  return CB_GLSL_VERSION
          "#define LOC_CORNER 0\n"
          "#define LOC_ENDS 1\n"
          "#define LOC_COLOR 2\n"

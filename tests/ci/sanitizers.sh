@@ -24,7 +24,7 @@ configure() {  # folder, sanitizer flags, extra cmake arguments...
   mkdir -p "$dir"
   CC=clang CXX=clang++ cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Debug \
     -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g -fno-omit-frame-pointer" -DCMAKE_CXX_FLAGS="$flags" \
-    -DCMAKE_EXE_LINKER_FLAGS="$flags" -DCHAINBREAK_WERROR=ON -DCHAINBREAK_BENCH=OFF \
+    -DCMAKE_EXE_LINKER_FLAGS="$flags" -DCHAINBREAK_WERROR=ON -DCHAINBREAK_BENCH=OFF -DCHAINBREAK_WEB=OFF \
     -DCHAINBREAK_TOML_HEADER_ONLY=ON "$@" > "$dir/configure.log"
 }
 

@@ -1,0 +1,53 @@
+// The page has no x86 kernels (rk4_*_avx2.cpp, *_avx512.cpp, lanes_*.cpp: x86 intrinsics and
+// target pragmas), but the dispatch files that name them (rk4_tile.cpp, rk4_chain.cpp,
+// lanes.cpp) are the program's own. On WebAssembly simd_supported() is true for the portable
+// path only (physics/simd.cpp), so active_simd() is SimdPath::Sse2 and these are never called:
+// the page runs the generic kernel, the one whose bits every x86 path reproduces. They trap if
+// that ever changes rather than compute anything.
+#include "physics/lanes_interval.h"
+#include "physics/rk4_chain.h"
+#include "physics/rk4_tile.h"
+
+namespace cb::detail {
+
+#define CB_NOT_IN_THE_PAGE __builtin_trap()
+
+namespace avx2 {
+void rk4_beads(const StepInput&, int, int, TileScratch&, StepOutput&) {
+  CB_NOT_IN_THE_PAGE;
+}
+void rk4_chain(const StepInput&, StepOutput&) {
+  CB_NOT_IN_THE_PAGE;
+}
+Rk4Chain rk4_chain_for(const StepInput&) {
+  CB_NOT_IN_THE_PAGE;
+}
+void rk4_window(const StepInput&, int, int, int, int, StepOutput&) {
+  CB_NOT_IN_THE_PAGE;
+}
+void lanes_interval(const LaneInterval&) {
+  CB_NOT_IN_THE_PAGE;
+}
+}  // namespace avx2
+
+namespace avx512 {
+void rk4_beads(const StepInput&, int, int, TileScratch&, StepOutput&) {
+  CB_NOT_IN_THE_PAGE;
+}
+void rk4_chain(const StepInput&, StepOutput&) {
+  CB_NOT_IN_THE_PAGE;
+}
+Rk4Chain rk4_chain_for(const StepInput&) {
+  CB_NOT_IN_THE_PAGE;
+}
+void rk4_window(const StepInput&, int, int, int, int, StepOutput&) {
+  CB_NOT_IN_THE_PAGE;
+}
+void lanes_interval(const LaneInterval&) {
+  CB_NOT_IN_THE_PAGE;
+}
+}  // namespace avx512
+
+#undef CB_NOT_IN_THE_PAGE
+
+}  // namespace cb::detail
