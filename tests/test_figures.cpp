@@ -505,3 +505,36 @@ TEST_CASE("One-body map: the lower string first exactly when sin(1/beta) > 0", "
     CHECK(windows.x2[m - 1] == Approx(std::min(1.0 / (2 * m * std::numbers::pi), 10.0)));
   }
 }
+
+TEST_CASE("flaw_map: fractions per beta sum to 1, a slow pull spreads, a jerk breaks spring N",
+          "[figures][flaws]") {
+  // The figure as drawn: every column of the heatmap (one beta) sums to 1 over the springs.
+  const cb::Figure& f = built_figure("flaw_map");
+  REQUIRE(f.panels.size() == 1);
+  const cb::Heatmap& h = f.panels[0].heatmap;
+  REQUIRE(h.rows == 30);
+  REQUIRE(h.columns >= 20);
+  for (int c = 0; c < h.columns; ++c) {
+    double sum = 0.0;
+    for (int r = 0; r < h.rows; ++r) sum += h.values[static_cast<std::size_t>(r) * h.columns + c];
+    INFO("column " << c);
+    CHECK(sum == Approx(1.0).margin(1e-4));
+  }
+  // The numbers behind it. At the largest beta (a jerk) spring N breaks in most seeds; at the
+  // smallest (a slow pull) the weakest link breaks wherever it is: every spring is hit, none in
+  // more than a few times 1/N, and the spread approaches a uniform law's sqrt((N^2-1)/12) = 8.7.
+  const cb::FlawMapData d = cb::flaw_map_data(cb::FigureOptions{}, 8, 1000);
+  for (int b = 0; b < 8; ++b) CHECK(d.unbroken[static_cast<std::size_t>(b)] == 0);
+  CHECK(d.at(7, 30) > 0.5);
+  for (int j = 1; j < 30; ++j) CHECK(d.at(7, j) < d.at(7, 30));
+  int hit = 0;
+  double most = 0.0;
+  for (int j = 1; j <= 30; ++j) {
+    hit += d.at(0, j) > 0.0;
+    most = std::max(most, d.at(0, j));
+  }
+  CHECK(hit == 30);
+  CHECK(most < 3.0 / 30.0);
+  CHECK(d.spread(0) > 7.0);
+  CHECK(d.spread(7) < 0.5 * d.spread(0));
+}

@@ -43,9 +43,32 @@ std::uint32_t strain_argb(double s, const Theme& theme) {
   return 0xFF000000u | byte(c.r) << 16 | byte(c.g) << 8 | byte(c.b);
 }
 
-// An image of strain colours, `columns` x `rows`, row 0 at the top; value(column, row) / scale.
+// The sequential map at t in 0 .. 1: from the plot area through a mid blue to the far end of
+// the theme's lightness (navy on paper, pale yellow on a dark screen), each anchor further from
+// the background in lightness, so the map reads in greyscale and for colour-blind readers.
+std::uint32_t sequential_argb(double t, const Theme& theme) {
+  t = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0);
+  const bool light = theme.name == ThemeName::Light;
+  const Rgb8 anchors[3] = {theme.panel, light ? Rgb8{74, 140, 196} : Rgb8{30, 110, 180},
+                           light ? Rgb8{8, 29, 88} : Rgb8{255, 240, 170}};
+  const int k = t < 0.5 ? 0 : 1;
+  const double f = t < 0.5 ? 2.0 * t : 2.0 * t - 1.0;
+  const auto mix = [&](std::uint8_t a, std::uint8_t b) {
+    return static_cast<std::uint32_t>(std::lround(a + f * (double(b) - double(a))));
+  };
+  const Rgb8 &a = anchors[k], &b = anchors[k + 1];
+  return 0xFF000000u | mix(a.r, b.r) << 16 | mix(a.g, b.g) << 8 | mix(a.b, b.b);
+}
+
+std::uint32_t cell_argb(double v, HeatmapColours colours, const Theme& theme) {
+  return colours == HeatmapColours::Sequential ? sequential_argb(v, theme) : strain_argb(v, theme);
+}
+
+// An image of a heatmap's colours, `columns` x `rows`, row 0 at the top; value(column, row) /
+// scale.
 template <typename Value>
-CairoSurface strain_image(const Theme& theme, int columns, int rows, Value value) {
+CairoSurface heatmap_image(const Theme& theme, HeatmapColours colours, int columns, int rows,
+                           Value value) {
   CairoSurface image(cairo_image_surface_create(CAIRO_FORMAT_RGB24, columns, rows));
   cairo_surface_flush(image.get());
   unsigned char* data = cairo_image_surface_get_data(image.get());
@@ -53,7 +76,7 @@ CairoSurface strain_image(const Theme& theme, int columns, int rows, Value value
   if (!data) throw std::runtime_error("cairo could not make a heatmap image");
   for (int r = 0; r < rows; ++r) {
     auto* row = reinterpret_cast<std::uint32_t*>(data + static_cast<std::ptrdiff_t>(r) * stride);
-    for (int c = 0; c < columns; ++c) row[c] = strain_argb(value(c, r), theme);
+    for (int c = 0; c < columns; ++c) row[c] = cell_argb(value(c, r), colours, theme);
   }
   cairo_surface_mark_dirty(image.get());
   return image;
@@ -140,10 +163,11 @@ struct PanelPainter {
   void heatmap() const {
     const Heatmap& h = p.heatmap;
     if (h.empty()) return;
-    const CairoSurface image = strain_image(theme, h.columns, h.rows, [&](int c, int r) {
-      // Image row 0 is the top, the heatmap's row 0 the bottom (y_lo).
-      return h.values[static_cast<std::size_t>(h.rows - 1 - r) * h.columns + c] / h.scale;
-    });
+    const CairoSurface image =
+        heatmap_image(theme, h.colours, h.columns, h.rows, [&](int c, int r) {
+          // Image row 0 is the top, the heatmap's row 0 the bottom (y_lo).
+          return h.values[static_cast<std::size_t>(h.rows - 1 - r) * h.columns + c] / h.scale;
+        });
     const double x0 = px(h.x_lo), x1 = px(h.x_hi), y0 = py(h.y_hi), y1 = py(h.y_lo);
     paint_image(cr, image.get(), {x0, y0, x1 - x0, y1 - y0});
   }
@@ -275,21 +299,27 @@ struct PanelPainter {
     const Heatmap& h = p.heatmap;
     if (h.empty()) return;
     const FigureBox& b = l.colour_bar;
-    constexpr int kSteps = 256;  // value / scale from +1 (top) to -1 (bottom)
-    const CairoSurface image =
-        strain_image(theme, 1, kSteps, [](int, int r) { return 1.0 - 2.0 * (r + 0.5) / kSteps; });
+    // value / scale from +1 (top) to -1 (bottom), or to 0 for a sequential map.
+    constexpr int kSteps = 256;
+    const bool sequential = h.colours == HeatmapColours::Sequential;
+    const double bottom = sequential ? 0.0 : -1.0;
+    const CairoSurface image = heatmap_image(theme, h.colours, 1, kSteps, [&](int, int r) {
+      return 1.0 - (1.0 - bottom) * (r + 0.5) / kSteps;
+    });
     paint_image(cr, image.get(), b);
     source(cr, theme.axis);
     cairo_set_line_width(cr, 1.0);
     cairo_rectangle(cr, crisp(b.x), crisp(b.y), b.w - 1, b.h - 1);
     cairo_stroke(cr);
     source(cr, theme.text);
-    for (double v : {-1.0, -0.5, 0.0, 0.5, 1.0}) {
+    for (double v : sequential ? std::vector<double>{0.0, 0.25, 0.5, 0.75, 1.0}
+                               : std::vector<double>{-1.0, -0.5, 0.0, 0.5, 1.0}) {
       char buffer[32];
       std::snprintf(buffer, sizeof buffer, "%g", v * h.scale);
       std::string label = buffer;
       if (label[0] == '-') label = "\u2212" + label.substr(1);
-      draw_text(cr, small(), b.right() + 0.3 * m.font, b.y + 0.5 * (1.0 - v) * b.h, label);
+      draw_text(cr, small(), b.right() + 0.3 * m.font, b.y + (1.0 - v) / (1.0 - bottom) * b.h,
+                label);
     }
     draw_text(cr, small(), b.x + 0.5 * b.w, b.y - 1.4 * m.small, h.label, 0.5);
   }

@@ -91,6 +91,7 @@ const std::vector<FigureEntry>& figure_entries() {
       {"gravity_map", figure_gravity_map},
       {"hanging_map", figure_hanging_map},
       {"fput_map", figure_fput_map},
+      {"flaw_map", figure_flaw_map},
   };
   return entries;
 }

@@ -4,6 +4,7 @@
 // CSV by the app: one struct, every output, so the pictures and the CSV cannot disagree.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -66,16 +67,29 @@ struct Series {
   std::vector<double> x2, y2;  // XSpans: right edges; Band: upper edges
 };
 
+// How a heatmap's value / scale becomes a colour.
+enum class HeatmapColours {
+  Strain,      // the chain's diverging strain colour map over -1 .. 1 (signed fields)
+  Sequential,  // 0 .. 1 from the background to full ink, lightness monotonic: reads in greyscale
+};
+
 // A scalar field over a grid of cells: value(column, row) = values[row * columns + column],
-// column 0 at x_lo, row 0 at y_lo. Coloured by the chain's strain colour map at value / scale.
+// column 0 at x_lo, row 0 at y_lo, coloured at value / scale. With x_log the columns are
+// equally wide in log10 x (for a log x axis), else in x.
 struct Heatmap {
   int columns = 0, rows = 0;
   double x_lo = 0, x_hi = 1, y_lo = 0, y_hi = 1;
   std::vector<float> values;
   double scale = 1.0;
   std::string label;  // what the colour bar shows
+  HeatmapColours colours = HeatmapColours::Strain;
+  bool x_log = false;
   bool empty() const { return columns == 0 || rows == 0; }
-  double x_at(int column) const { return x_lo + (column + 0.5) * (x_hi - x_lo) / columns; }
+  double x_at(int column) const {
+    const double f = (column + 0.5) / columns;
+    return x_log ? std::pow(10.0, std::log10(x_lo) + f * (std::log10(x_hi) - std::log10(x_lo)))
+                 : x_lo + f * (x_hi - x_lo);
+  }
   double y_at(int row) const { return y_lo + (row + 0.5) * (y_hi - y_lo) / rows; }
 };
 

@@ -54,9 +54,28 @@ Figure figure_gravity_map(const FigureOptions&);
 Figure figure_hanging_map(const FigureOptions&);
 // Anharmonic springs (figures_fput.cpp, issue #24): first break against beta, RK4.
 Figure figure_fput_map(const FigureOptions&);
+// Flawed chains (figures_flaw.cpp, issue #23): the fraction of Weibull seeds in which each spring
+// breaks first, against beta (a heatmap springs x beta).
+Figure figure_flaw_map(const FigureOptions&);
+inline constexpr int kMapBeads = 30;  // the maps' chains
+inline constexpr double kFlawBetaLo = 0.001, kFlawBetaHi = 3.0;
+inline constexpr double kFlawMapModulus = 4.0, kFlawMapGamma = 0.05;
+inline constexpr double kFlawMapColourTop = 0.1;  // the sequential map's darkest fraction
+// The flaw map's numbers: fraction of seeds 1 .. seeds in which spring j breaks first at beta[b].
+struct FlawMapData {
+  std::vector<double> beta;
+  int seeds = 0;
+  std::vector<double> fraction;  // at b N + j - 1
+  std::vector<int> unbroken;     // per beta: seeds with no break by the end of the search
+  double at(int b, int spring) const {
+    return fraction[static_cast<std::size_t>(b) * kMapBeads + spring - 1];
+  }
+  double mean_spring(int b) const;  // sum_j j fraction
+  double spread(int b) const;       // the breaking spring's standard deviation
+};
+FlawMapData flaw_map_data(const FigureOptions& o, int betas, int seeds);
 
 // The breaking map's range and its three thresholds of Fig. 4(c), for N = 30.
-inline constexpr int kMapBeads = 30;
 inline constexpr double kMapZetaMax = 250.0;  // past 8N = 240
 inline constexpr double kFig4cThresholds[3] = {40.0, 100.0, 160.0};
 // The anharmonic map's threshold, for every b (below b = -0.1's flat point 1.826).
