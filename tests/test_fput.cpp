@@ -366,3 +366,80 @@ TEST_CASE("fput: the fput_map figure's b = 0 points follow the exact map; b = 0.
   CHECK(in_range >= 10);
   CHECK(near_wall == in_range);
 }
+
+// The hanging equilibrium of anharmonic springs (issue #24 with #22): phi + a phi^2 + b phi^3 =
+// t solved by fput_extension, against closed forms that share nothing with its Newton iteration.
+TEST_CASE("fput_extension solves the spring's cubic against closed forms", "[fput][gravity]") {
+  for (double t : {1e-6, 0.03, 0.4, 2.0}) {
+    // b = 0: the quadratic's rising root, written without cancellation, 2 t / (1 + sqrt(1 + 4 a
+    // t)).
+    for (double a : {0.7, -0.2}) {
+      if (1.0 + 4.0 * a * t <= 0.0) continue;
+      const double phi = 2.0 * t / (1.0 + std::sqrt(1.0 + 4.0 * a * t));
+      CHECK(cb::fput_extension(t, a, 0.0) == Approx(phi).epsilon(1e-13));
+    }
+    // a = 0, b > 0: the one real root of phi^3 + p phi + q = 0 (p = 1/b, q = -t/b) in its
+    // hyperbolic form, -2 sqrt(p/3) sinh(asinh(3 q / (2 p) sqrt(3/p)) / 3), free of Cardano's
+    // cancellation at small t.
+    const double b = 0.5, p = 1.0 / b, q = -t / b;
+    const double phi =
+        -2.0 * std::sqrt(p / 3.0) * std::sinh(std::asinh(1.5 * q / p * std::sqrt(3.0 / p)) / 3.0);
+    CHECK(cb::fput_extension(t, 0.0, b) == Approx(phi).epsilon(1e-12));
+    // Both terms, softening and stiffening: the residual is at rounding (the 1e-14 the solver
+    // promises), on the rising branch.
+    for (const auto& [a2, b2] :
+         {std::pair{0.3, 0.5}, std::pair{-0.3, 0.5}, std::pair{0.2, -0.05}}) {
+      const double x = cb::fput_extension(t, a2, b2);
+      if (std::isnan(x)) continue;
+      CHECK(std::abs(cb::fput_tension(x, a2, b2) - t) <= 1e-14 * t);
+      CHECK(cb::fput_slope(x, a2, b2) > 0.0);
+    }
+  }
+  // a = -0.2, b = 0 holds at most T(2.5) = 1.25: beyond it there is no extension.
+  CHECK(cb::fput_stretch_flat(-0.2, 0.0) == Approx(2.5).epsilon(1e-15));
+  CHECK(std::isfinite(cb::fput_extension(1.2499, -0.2, 0.0)));
+  CHECK(std::isnan(cb::fput_extension(1.2501, -0.2, 0.0)));
+  CHECK(cb::fput_extension(0.3, 0.0, 0.0) == 0.3);  // linear springs: the load itself
+}
+
+TEST_CASE("a hanging anharmonic chain's equilibrium: each spring holds the weight below it",
+          "[fput][gravity]") {
+  cb::ChainParams p = fput_chain(5, 0.4, 0.8);
+  p.gravity = 0.03;
+  p.mass = {1.0, 2.0, 0.5, 1.5, 1.0};
+  p.stiffness = {2.0, 1.0, 1.5, 0.7, 1.2};
+  const std::vector<double> eq = p.equilibrium_extensions();
+  double below = 0.0;
+  for (int j = 5; j >= 1; --j) {
+    below += p.gravity * p.mass_of(j);
+    const double k = p.stiffness_of(j), phi = eq[j - 1];
+    // K_j (phi + a phi^2 + b phi^3) = G sum_{i>=j} m_i to rounding, and below the linear guess
+    // (a, b > 0 stiffen the spring).
+    CHECK(std::abs(k * cb::fput_tension(phi, 0.4, 0.8) - below) <= 1e-14 * below);
+    CHECK(phi < below / k);
+  }
+  // The linear chain keeps its division's bits.
+  cb::ChainParams linear = p;
+  linear.fput_alpha = linear.fput_beta = 0.0;
+  CHECK(linear.equilibrium_extensions()[0] == (p.gravity * 6.0) / 2.0);
+}
+
+TEST_CASE("a hanging chain of softening springs too heavy for them is refused with the numbers",
+          "[fput][gravity][scene]") {
+  using namespace cb::scene_test;
+  using Catch::Matchers::Contains;
+  // 30 beads of weight 0.05: spring 1 carries 1.5; a = -0.2 holds at most T(2.5) = 1.25.
+  const std::string heavy = with("gamma = 0.0", "gamma = 0.0\ngravity = 0.05\nfput_alpha = -0.2");
+  const std::string e = error_of(heavy);
+  CHECK_THAT(e, Contains("no hanging equilibrium"));
+  CHECK_THAT(e, Contains("Spring 1 carries the weight below it, G sum m = 1.5"));
+  CHECK_THAT(e, Contains("largest at phi = 2.5, where it is 1.25"));
+  CHECK_THAT(e, Contains("use gravity < 0.041666"));
+  // Light enough, with a threshold below the flat (T(2) = 1.2 holds 30 beads of 0.03): the
+  // equilibrium exists, and the scene is refused only for the motion about it.
+  const std::string light =
+      with("gamma = 0.0", "gamma = 0.0\ngravity = 0.03\nfput_alpha = -0.2\nthreshold = 2.0");
+  const std::string e2 = error_of(light);
+  CHECK_THAT(e2, !Contains("no hanging equilibrium"));
+  CHECK_THAT(e2, Contains("the hanging equilibrium is computed, but the motion about it is not"));
+}

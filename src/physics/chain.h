@@ -67,8 +67,9 @@ struct ChainParams {
   // The chain hangs under its weight (gravity > 0).
   bool hanging() const { return gravity > 0.0; }
   // The hanging equilibrium, Eq. (general) with f = 0 and psi'' = 0: spring j carries the weight
-  // of the beads below it, K_j phi_eq,j = G sum_{i>=j} m_i. Spring j (1..N) at index j-1; all
-  // zeros when gravity = 0.
+  // of the beads below it, K_j phi_eq,j = G sum_{i>=j} m_i (anharmonic springs: K_j T(phi_eq,j)
+  // = G sum_{i>=j} m_i, fput_extension). Spring j (1..N) at index j-1; all zeros when
+  // gravity = 0; NaN for a spring whose load exceeds the largest tension it can hold.
   std::vector<double> equilibrium_extensions() const;
   // psi_eq,j = sum_{i<=j} phi_eq,i, bead j at index j-1.
   std::vector<double> equilibrium_positions() const;
@@ -96,6 +97,15 @@ inline double fput_potential(double phi, double a, double b) {
 double fput_stiffest_slope(double phi_c, double a, double b);
 // The smallest |phi| at which T'(phi) = 0 (the tension stops growing), or +inf if it never does.
 double fput_first_flat(double a, double b);
+// The smallest phi > 0 at which T'(phi) = 0: the largest tension a stretched spring holds is
+// T there. +inf if the tension grows for every phi > 0.
+double fput_stretch_flat(double a, double b);
+// The extension phi >= 0 at which a spring of unit stiffness holds tension t >= 0,
+// phi + a phi^2 + b phi^3 = t, on the rising branch [0, fput_stretch_flat]: Newton from the
+// linear guess phi = t, kept inside a bracket that bisection shrinks when a step leaves it.
+// The result satisfies |T(phi) - t| <= 1e-14 t; NaN when t exceeds the largest tension (no
+// equilibrium). a = b = 0 returns t itself.
+double fput_extension(double t, double a, double b);
 
 struct BreakEvent {
   int spring = 0;         // 1..N, or 0 for the pull string

@@ -135,6 +135,7 @@ class Checker {
   void chain() const;
   void gravity() const;
   void anharmonic() const;
+  bool equilibrium_exists() const;
   void coefficients(const std::string& key, const char* element, const char* what,
                     const std::vector<double>& values, Quantity q) const;
   void drive() const;
@@ -193,13 +194,14 @@ void Checker::chain() const {
          "it); add e.g. threshold = 1.0 to [chain], or set pull_string = false");
   gravity();
   anharmonic();
-  // The hanging equilibrium of anharmonic springs solves K_j (phi + a phi^2 + b phi^3) = load
-  // per spring (issue #24 with #22): not built yet, so the pair is refused rather than run wrong.
-  if (scene_.chain.hanging() && scene_.chain.anharmonic())
+  // The hanging equilibrium of anharmonic springs is solved (gravity() checks that it exists),
+  // but the kernels integrate a hanging chain about it with the linear stencil's shift, which
+  // holds for linear springs only: the pair is refused rather than run wrong.
+  if (scene_.chain.hanging() && scene_.chain.anharmonic() && !failed({"chain.gravity"}))
     fail("chain.gravity",
          "chain.gravity with anharmonic springs (chain.fput_alpha, chain.fput_beta) is not "
-         "supported yet: the hanging equilibrium of such springs is not computed; use "
-         "gravity = 0, or fput_alpha = fput_beta = 0");
+         "supported yet: the hanging equilibrium is computed, but the motion about it is not; "
+         "use gravity = 0, or fput_alpha = fput_beta = 0");
 }
 
 // chain.gravity = G >= 0, and light enough that the hanging equilibrium breaks no spring:
@@ -215,16 +217,22 @@ void Checker::gravity() const {
              "; write e.g. gravity = 0.1, or gravity = 0 for a chain on a table");
     return;
   }
-  if (!p.hanging() || !p.breakable() ||
-      failed({"chain.beads", "chain.mass", "chain.stiffness", "chain.threshold"}))
+  if (!p.hanging() || failed({"chain.beads", "chain.mass", "chain.stiffness", "chain.fput_alpha",
+                              "chain.fput_beta"}))
     return;
-  // The heaviest G the chain holds: min_j phi_c,j K_j / sum_{i>=j} m_i.
+  if (!std::isfinite(p.fput_alpha) || !std::isfinite(p.fput_beta)) return;  // anharmonic() says
+  if (p.anharmonic() && !equilibrium_exists()) return;
+  if (!p.breakable() || failed({"chain.threshold"})) return;
+  // The heaviest G the chain holds: min_j K_j T(phi_c,j) / sum_{i>=j} m_i (T(phi) = phi for
+  // linear springs; for anharmonic ones T rises up to the threshold, which anharmonic() checks).
   const std::vector<double> eq = p.equilibrium_extensions();
   double most = std::numeric_limits<double>::infinity(), below = 0.0;
   int weakest = 0;
   for (int j = p.beads; j >= 1; --j) {
     below += p.mass_of(j);
-    const double g = p.threshold_of(j) * p.stiffness_of(j) / below;
+    const double held = p.anharmonic() ? fput_tension(p.threshold_of(j), p.fput_alpha, p.fput_beta)
+                                       : p.threshold_of(j);
+    const double g = held * p.stiffness_of(j) / below;
     if (g < most) most = g, weakest = j;
   }
   if (p.gravity >= most)
@@ -235,6 +243,36 @@ void Checker::gravity() const {
              ", at or beyond its threshold " + shown(p.threshold_of(weakest), Quantity::Force) +
              ", before any pull; use gravity < " + shown(most, Quantity::Force) +
              " or raise chain.threshold");
+}
+
+// Anharmonic springs that soften (a < 0 or b < 0) hold at most K_j T(phi*), phi* the first
+// phi > 0 where T'(phi) = 0: a hanging chain whose weight below spring j exceeds that has no
+// equilibrium (issue #24 with #22). False (and the scene refused) when some spring cannot hold.
+bool Checker::equilibrium_exists() const {
+  const ChainParams& p = scene_.chain;
+  const double a = p.fput_alpha, b = p.fput_beta, flat = fput_stretch_flat(a, b);
+  const std::vector<double> eq = p.equilibrium_extensions();
+  if (std::all_of(eq.begin(), eq.end(), [](double phi) { return std::isfinite(phi); })) return true;
+  // The heaviest G every spring holds, min_j K_j T(phi*) / sum_{i>=j} m_i, and the spring that
+  // sets it (the one the message names).
+  const double most = fput_tension(flat, a, b);
+  double heaviest = std::numeric_limits<double>::infinity(), below = 0.0, mass = 0.0;
+  int weakest = 0;
+  for (int j = p.beads; j >= 1; --j) {
+    below += p.mass_of(j);
+    const double g = p.stiffness_of(j) * most / below;
+    if (g <= heaviest) heaviest = g, weakest = j, mass = below;
+  }
+  fail("chain.gravity",
+       "chain.gravity = " + shown(p.gravity, Quantity::Force) +
+           " with chain.fput_alpha = " + format_exact(a) + ", fput_beta = " + format_exact(b) +
+           ": the chain has no hanging equilibrium. Spring " + std::to_string(weakest) +
+           " carries the weight below it, G sum m = " + format_approx(p.gravity * mass) +
+           ", but its tension K (phi + a phi^2 + b phi^3) is largest at phi = " +
+           format_approx(flat) + ", where it is " + format_approx(p.stiffness_of(weakest) * most) +
+           "; use gravity < " + shown(heaviest, Quantity::Force) +
+           ", or a larger fput_beta (or fput_alpha)");
+  return false;
 }
 
 // Anharmonic springs (issue #24): the tension phi + a phi^2 + b phi^3 must grow with phi for
