@@ -61,6 +61,13 @@ int submit_run(const RunOptions& given) {
   if (given.scene.empty()) throw SceneError("run --submit slurm: give a scene file");
   if (given.csv.empty())
     throw GridError("run --submit slurm: give --csv FILE (the job's output, resumable)");
+  // Slurm signals kRunSignalLead seconds before the limit; a shorter limit would be signalled
+  // (and requeued) at every start, forever.
+  if (const long long t = slurm_time_seconds(given.time); t >= 0 && t <= kRunSignalLead)
+    throw GridError("--time " + given.time + ": the job is warned " +
+                    std::to_string(kRunSignalLead) +
+                    " s before its time limit to checkpoint, so the limit must be longer, "
+                    "e.g. --time 10 (minutes) or --time 04:00:00");
   RunOptions o = given;
   if (o.checkpoint.empty()) o.checkpoint = fs::path(o.csv).replace_extension(".ckpt").string();
   // Everything the job would refuse, refused here before anything is queued.

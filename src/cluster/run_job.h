@@ -23,4 +23,10 @@ struct RunJob {
 
 std::string run_sbatch_script(const RunJob& job);
 
+// Seconds of a Slurm --time ("M", "M:S", "H:M:S", "D-H", "D-H:M", "D-H:M:S"); -1 for text of
+// another form (sbatch then judges it), or "UNLIMITED"/"INFINITE".
+long long slurm_time_seconds(const std::string& time);
+// The warning before the time limit the script asks for (--signal=B:TERM@120).
+inline constexpr long long kRunSignalLead = 120;
+
 }  // namespace cb

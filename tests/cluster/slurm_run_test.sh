@@ -48,7 +48,7 @@ for _ in $(seq 300); do  # 30 s: the requeued job pending again
     [ "$(squeue --noheader --jobs "$job" --format %T)" = PENDING ] && break
   sleep 0.1
 done
-scontrol update JobId="$job" StartTime=now
+scontrol update JobId="$job" StartTime=now || fail "job $job was not requeued after TERM"
 status=0
 wait "$waiter" || status=$?
 t2=$(date +%s.%N)
@@ -58,6 +58,12 @@ log=$tmp/out/long.slurm-$job.out
 grep -q "start 1 " "$log" || fail "no first start in $log"
 grep -q "checkpointed; requeueing" "$log" || fail "the job did not requeue itself after TERM"
 grep -q "start 2 " "$log" || fail "the job did not start again after its requeue"
+grep -q "resuming $tmp/out/long.ckpt" "$log" || fail "the second start did not resume the checkpoint"
+# A fresh start would write the same bytes: the script's resume branch is checked as text.
+grep -A2 -x 'if \[ -e "$checkpoint" \]; then' "$tmp/out/long.sbatch" |
+  grep -q "chainbreak run --resume $tmp/out/long.ckpt --quiet &" ||
+  fail "the script does not resume an existing checkpoint"
+[ "$(grep -c '"steps":' "$log")" = 1 ] || fail "not exactly one summary in $log"
 [ ! -e "$tmp/out/long.ckpt" ] || fail "the checkpoint is still there after the run finished"
 cmp "$tmp/out/local.csv" "$tmp/out/long.csv" || fail "the requeued run's CSV differs from a local run"
 # The summary (printed once, by the start that finished) is the local run's but for the CSV.
@@ -74,8 +80,11 @@ set +e
 s1=$?
 "$cb" run "${run[@]}" --csv "$tmp/out/x.csv" --time 1 2>"$tmp/time.err"
 s2=$?
+"$cb" run "${run[@]}" --csv "$tmp/out/x.csv" --submit slurm --time 2 2>"$tmp/short.err"
+s3=$?
 set -e
 [ "$s1" = 2 ] && grep -q "cannot be resumed" "$tmp/h5.err" || fail "--submit --h5: $s1 $(cat "$tmp/h5.err")"
 [ "$s2" = 2 ] && grep -q "go with --submit slurm" "$tmp/time.err" || fail "--time alone: $s2 $(cat "$tmp/time.err")"
+[ "$s3" = 2 ] && grep -q "must be longer" "$tmp/short.err" || fail "--time 2: $s3 $(cat "$tmp/short.err")"
 [ ! -e "$tmp/out/x.sbatch" ] || fail "a refused submit wrote a script"
 echo "PASS"
