@@ -276,12 +276,12 @@ TEST_CASE("fput: scenes read the keys, refuse a softening tension, and the solve
   const std::string alpha = with("gamma = 0.0\n", "gamma = 0.0\nfput_alpha = 0.25\n");
   CHECK(error_of(alpha).find("stops growing at phi = -2") != std::string::npos);
 
-  for (const char* solver : {"exact", "continuum"}) {
+  for (const cb::Solver solver : {cb::Solver::Exact, cb::Solver::Continuum}) {
     cb::RunRequest r;
     r.solver = solver;
     try {
       cb::check_run_request(s, r);
-      FAIL("no refusal for --solver " << solver);
+      FAIL("no refusal for --solver " << cb::solver_name(solver));
     } catch (const cb::SceneError& err) {
       const std::string m = err.what();
       INFO(m);
@@ -290,7 +290,7 @@ TEST_CASE("fput: scenes read the keys, refuse a softening tension, and the solve
     }
   }
   cb::RunRequest rk4;
-  rk4.solver = "rk4";
+  rk4.solver = cb::Solver::Rk4;
   CHECK_NOTHROW(cb::check_run_request(s, rk4));
 }
 

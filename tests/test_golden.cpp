@@ -20,6 +20,7 @@
 #include "output/png_writer.h"
 #include "physics/integrator.h"
 #include "render/renderer.h"
+#include "scene/scene.h"
 #include "snapshot/snapshot.h"
 
 namespace {
@@ -202,6 +203,33 @@ cb::RenderSnapshot cascade_labels(cb::ThemeName theme) {
   return cb::build_snapshot(state, chain(n, 2.0), 0.0, style);
 }
 
+// Issue #22's vertical view, from a scene of scenes/ with the Integrator: `after` tau past the
+// first break (after >= 0), else at step `step`, laid out as `chainbreak snapshot` lays it
+// out (render.view is "vertical" by default for these scenes; the layout measured up to the
+// first break).
+cb::RenderSnapshot hanging_scene(const char* file, cb::ThemeName theme, std::int64_t step,
+                                 double after) {
+  const cb::SceneDesc scene = cb::load_scene(std::string(CHAINBREAK_SCENES) + "/" + file);
+  cb::View view = cb::View::Longitudinal;
+  REQUIRE(cb::parse_view(scene.render.view, view));
+  REQUIRE(view == cb::View::Vertical);
+  const auto style = measured_style(scene.chain, scene.drive, scene.integrator.t_end, view, theme);
+  return frame_at(scene.chain, scene.drive, style, step, after);
+}
+
+// scenes/hanging_chain.toml (N = 30, G = 0.01, ramp 0.005) 1 after the top spring breaks
+// (tau ~ 141): the chain falls away from the ceiling, the flash, the first break's label.
+cb::RenderSnapshot hanging_chain_just_broken(cb::ThemeName theme) {
+  return hanging_scene("hanging_chain.toml", theme, 0, 1.0);
+}
+
+// scenes/inertia_ball.toml (Heald's ball, G = 0.05, ramp beta = 1/(2.5 pi)) at tau = 4,
+// before either string breaks: the ceiling, the upper string stretched by the weight and the
+// pull, the ball, the lower string and the arrow pointing down.
+cb::RenderSnapshot inertia_ball(cb::ThemeName theme) {
+  return hanging_scene("inertia_ball.toml", theme, 400, -1.0);
+}
+
 }  // namespace
 
 TEST_CASE("Golden frames match within tolerance", "[golden]") {
@@ -242,5 +270,18 @@ TEST_CASE("Golden frames match within tolerance", "[golden]") {
     CHECK(cascade.break_labels.front().first);
     CHECK(cascade.break_labels.front().spring == 30);
     check_golden("cascade_labels" + suffix, backend, renderer.render(cascade));
+  }
+
+  // Issue #22's vertical view: a hanging chain and Heald's ball on two strings, both themes.
+  for (const cb::ThemeName theme : {cb::ThemeName::Dark, cb::ThemeName::Light}) {
+    const std::string suffix = theme == cb::ThemeName::Light ? "_light" : "";
+    const auto chain = hanging_chain_just_broken(theme);
+    REQUIRE(!chain.break_labels.empty());
+    CHECK(chain.break_labels.front().spring == 1);  // the top spring holds the whole weight
+    check_golden("hanging_chain" + suffix, backend, renderer.render(chain));
+    const auto ball = inertia_ball(theme);
+    CHECK(ball.breaks_shown.empty());
+    CHECK(ball.arrow_length > 0.0);  // down the frame, the way the pull acts
+    check_golden("inertia_ball" + suffix, backend, renderer.render(ball));
   }
 }

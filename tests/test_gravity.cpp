@@ -23,6 +23,7 @@
 #include "physics/lanes.h"
 #include "physics/simd.h"
 #include "scene/scene.h"
+#include "test_support.h"
 
 namespace {
 
@@ -344,3 +345,22 @@ TEST_CASE("lanes find a hanging chain's first break as Integrator does, bit for 
     }
   }
 }
+
+namespace {
+
+TEST_CASE("run's JSON summary states G for a hanging chain and stays as it was for G = 0",
+          "[gravity][cli]") {
+  // inertia_ball.toml sets chain.gravity = 0.05 (its file); ball_pull.toml has no weight.
+  const std::string scenes = std::string(CHAINBREAK_SCENES) + "/";
+  const auto hanging = cb::test::run_chainbreak("run " + scenes + "inertia_ball.toml");
+  REQUIRE(hanging.status == 0);
+  const auto with = json::parse(hanging.out);
+  REQUIRE(with.contains("gravity"));
+  CHECK(with["gravity"].get<double>() == 0.05);
+  const auto flat = cb::test::run_chainbreak("run " + scenes + "ball_pull.toml");
+  REQUIRE(flat.status == 0);
+  CHECK(flat.out.find("\"gravity\"") == std::string::npos);
+  CHECK(!json::parse(flat.out).contains("gravity"));
+}
+
+}  // namespace

@@ -45,7 +45,7 @@ RenderDesc frame_settings(const SceneDesc& scene, const FrameOptions& o) {
   if (!o.view.empty()) {
     View v;
     if (!parse_view(o.view, v))
-      throw SceneError("--view " + o.view + ": expected longitudinal, transverse or both");
+      throw SceneError("--view " + o.view + ": expected longitudinal, transverse, both or vertical");
     d.view = o.view;
   }
   if (!o.theme.empty()) {

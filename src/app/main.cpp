@@ -170,7 +170,7 @@ int main(int argc, char** argv) {
     cmd->add_option("--size", f.size, "Frame size WIDTHxHEIGHT, e.g. 1920x1080");
     cmd->add_option("-q,--quality", f.quality,
                     "Preset: l 854x480@15, m 1280x720@30, h 1920x1080@60, k 3840x2160@60");
-    cmd->add_option("--view", f.view, "longitudinal, transverse or both");
+    cmd->add_option("--view", f.view, "longitudinal, transverse, both or vertical");
     cmd->add_option("--theme", f.theme,
                     "dark (projector; default) or light (white: handouts, papers)")
         ->check(CLI::IsMember({"dark", "light"}));

@@ -43,6 +43,9 @@ Json summary_json(const RunOptions& o, const SceneDesc& scene, const RunOutcome&
   Json j = {{"scene", scene.name}, {"title", scene.title}, {"solver", solver_name(o.solver)}};
   j["beads"] = scene.chain.beads;
   j["gamma"] = scene.chain.gamma;
+  // Issue #22: G = mg/(K l) of a hanging chain; absent for G = 0 so those summaries keep
+  // their bytes.
+  if (scene.chain.hanging()) j["gravity"] = scene.chain.gravity;
   j["threshold"] = scene.chain.breakable() ? Json(scene.chain.threshold) : Json(nullptr);
   add_thresholds(j, scene.chain);
   j["drive"] = drive_type_name(scene.drive.type);

@@ -197,7 +197,7 @@ SceneDesc parse_scene(const std::string& text, const std::string& path,
   d.chain = scene_detail::read_chain(r, d.units, c, d.threshold_draw);
   d.drive = scene_detail::read_drive(r, c, file.parent_path().string());
   d.integrator = scene_detail::read_integrator(r, c);
-  d.render = read_render(r);
+  d.render = read_render(r, d.chain);
   d.origins = r.origins();
   scene_detail::check_values(d, r.problems());
   r.problems().throw_if_any();

@@ -49,7 +49,9 @@ struct RenderDesc {
   int width = 1280, height = 720;     // pixels
   double fps = 30.0;                  // frames per second of video
   double speed = 10.0;                // tau per second of video
-  std::string view = "longitudinal";  // longitudinal | transverse | both
+  // longitudinal | transverse | both | vertical; without render.view: vertical for a hanging
+  // chain (chain.gravity > 0, issue #22), longitudinal otherwise.
+  std::string view = "longitudinal";
   // dark (projector; the default for videos: the strain map's tension end is brightest and
   // reads best on black in a dim hall) | light (white, for handouts and papers)
   std::string theme = "dark";

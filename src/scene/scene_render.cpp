@@ -18,8 +18,9 @@ int read_size(const SceneReader& r, std::string_view key, int fallback) {
 }  // namespace
 
 // The values are checked by validate() (scene_validate.cpp).
-RenderDesc read_render(const SceneReader& r) {
+RenderDesc read_render(const SceneReader& r, const ChainParams& chain) {
   RenderDesc d;
+  if (chain.hanging()) d.view = "vertical";  // issue #22: a hanging chain hangs on screen
   d.width = read_size(r, "width", d.width);
   d.height = read_size(r, "height", d.height);
   d.fps = r.number("render", "fps").value_or(d.fps);

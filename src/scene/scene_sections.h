@@ -21,7 +21,7 @@ ChainParams read_chain(const SceneReader& r, std::optional<Units>& units, const 
                        std::optional<ThresholdDraw>& draw);
 // scene_dir: where drive.file is looked up when it is a relative path.
 DriveDesc read_drive(const SceneReader& r, const Conversion& c, const std::string& scene_dir);
-RenderDesc read_render(const SceneReader& r);
+RenderDesc read_render(const SceneReader& r, const ChainParams& chain);
 IntegratorDesc read_integrator(const SceneReader& r, const Conversion& c);
 
 // validate()'s checks, adding to `problems` and skipping keys that already have one (their

@@ -430,10 +430,12 @@ void Checker::render() const {
   if (!(d.speed > 0.0))
     fail("render.speed", "render.speed must be > 0 (tau per second of video), got " +
                              format_exact(d.speed) + "; write e.g. speed = 10.0");
-  if (d.view != "longitudinal" && d.view != "transverse" && d.view != "both")
+  if (d.view != "longitudinal" && d.view != "transverse" && d.view != "both" &&
+      d.view != "vertical")
     fail("render.view",
          "unknown render.view '" + d.view + "'; " +
-             scene_detail::suggest(d.view, {"longitudinal", "transverse", "both"}, "\"", "\""));
+             scene_detail::suggest(d.view, {"longitudinal", "transverse", "both", "vertical"}, "\"",
+                                   "\""));
   if (d.theme != "dark" && d.theme != "light")
     fail("render.theme", "unknown render.theme '" + d.theme + "'; " +
                              scene_detail::suggest(d.theme, {"dark", "light"}, "\"", "\""));

@@ -20,19 +20,33 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Bead positions in pixels for one view; bead 0 is the wall's anchor point.
+// Bead positions in pixels for one view; bead 0 is the wall's (ceiling's) anchor point.
+// `origin`: bead 0 at rest along the chain (x; vertical: y); `centre`: the rest line's y
+// (vertical: the chain's column, x).
 struct Placer {
   const std::vector<double>& psi;
-  double x_wall, spacing, psi_scale, centre;
-  bool transverse;
+  double origin, spacing, psi_scale, centre;
+  View view;
 
   double psi_at(int j) const { return j == 0 ? 0.0 : psi[j - 1]; }
   Point at(int j) const {
     const double p = psi_at(j);
-    return transverse ? Point{x_wall + j * spacing, centre - p * psi_scale}
-                      : Point{x_wall + (j + p) * spacing, centre};
+    switch (view) {
+      case View::Transverse:
+        return {origin + j * spacing, centre - p * psi_scale};
+      case View::Vertical:  // psi_j down from the ceiling (issue #22)
+        return {centre, origin + (j + p) * spacing};
+      default:
+        return {origin + (j + p) * spacing, centre};
+    }
   }
 };
+
+// Heald's ball (issue #22): one bead on the pull string, hanging, is drawn as lecturers show
+// it, the ball on two strings: the upper "spring" is a straight string, not a coil.
+bool ball_on_strings(const Frame& frame, const PanelLayout& p) {
+  return p.view == View::Vertical && frame.params.beads == 1 && frame.params.pull_string;
+}
 
 // Whether a shape spanning a and b, padded by `pad`, touches the frame (false for NaN).
 bool on_frame(const Point& a, const Point& b, double pad, int width, int height) {
@@ -99,8 +113,10 @@ void draw_beads_and_springs(Frame& frame, const PanelLayout& p, const Placer& at
   const std::size_t n = static_cast<std::size_t>(frame.params.beads);
   chain.springs.reserve(chain.springs.size() + n);
   beads.beads.reserve(beads.beads.size() + n);
+  const bool strings = ball_on_strings(frame, p);
+  const float string_width = f(std::max(2.0, 0.25 * frame.layout.text_size));
   for_each_intact_spring(frame, at, [&](int j, const Point& a, const Point& b) {
-    const float width = spring_width(frame, p, j);
+    const float width = strings ? string_width : spring_width(frame, p, j);
     if (!on_frame(a, b, width, W, H)) return;
     // Computed exactly as cb::extension() does, so tests can compare colours exactly.
     const double phi = at.psi_at(j) - at.psi_at(j - 1);
@@ -111,13 +127,14 @@ void draw_beads_and_springs(Frame& frame, const PanelLayout& p, const Placer& at
     const double ia = d > 0.0 ? std::min(ra, 0.25 * d) / d : 0.0;
     const double ib = d > 0.0 ? std::min(rb, 0.25 * d) / d : 0.0;
     chain.springs.push_back(SpringInstance{
-        f(a.x + ia * dx), f(a.y + ia * dy), f(b.x - ib * dx), f(b.y - ib * dy), width, p.coils,
-        strain_color(phi / frame.strain_scale_of(j), frame.style.theme)});
+        f(a.x + ia * dx), f(a.y + ia * dy), f(b.x - ib * dx), f(b.y - ib * dy), width,
+        strings ? 0.0f : p.coils, strain_color(phi / frame.strain_scale_of(j), frame.style.theme)});
   });
   for (int j = 1; j <= frame.params.beads; ++j) {
     const Point c = at.at(j);
     const double r = bead_radius(frame, p, j);
-    if (on_frame(c, c, r, W, H)) beads.beads.push_back(BeadInstance{f(c.x), f(c.y), f(r), frame.pal.bead});
+    if (on_frame(c, c, r, W, H))
+      beads.beads.push_back(BeadInstance{f(c.x), f(c.y), f(r), frame.pal.bead});
   }
 }
 
@@ -140,8 +157,10 @@ void draw_broken_halves(Frame& frame, const PanelLayout& p, const Placer& at) {
     const double len = fraction * std::min(gap, cap);
     const double ux = dx / gap * len, uy = dy / gap * len;
     const Point a1{a.x + ux, a.y + uy}, b1{b.x - ux, b.y - uy};
-    const float coils = 0.5f * p.coils;  // half a spring has half the turns
-    const float width = spring_width(frame, p, j);
+    const bool strings = ball_on_strings(frame, p);
+    const float coils = strings ? 0.0f : 0.5f * p.coils;  // half a spring has half the turns
+    const float width =
+        strings ? f(std::max(2.0, 0.25 * frame.layout.text_size)) : spring_width(frame, p, j);
     if (on_frame(a, a1, width, W, H)) {
       chain.springs.push_back(
           SpringInstance{f(a.x), f(a.y), f(a1.x), f(a1.y), width, coils, frame.pal.broken_half});
@@ -312,12 +331,16 @@ void draw_ribbon(Frame& frame, const PanelLayout& p, double origin) {
 // part stays in frame while the detached part may fly off), the gap's middle in the
 // transverse view, the string's middle for the pull string.
 Point break_anchor(const Frame& frame, const PanelLayout& p, const Placer& at, int spring) {
+  const bool vertical = p.view == View::Vertical;
   if (spring == 0) {
     const Point n = at.at(frame.params.beads);
-    return {n.x + p.bead_radius + 0.5 * frame.layout.string_length, n.y};
+    const double d = p.bead_radius + 0.5 * frame.layout.string_length;
+    return vertical ? Point{n.x, n.y + d} : Point{n.x + d, n.y};
   }
   const Point a = at.at(spring - 1), b = at.at(spring);
   if (p.view == View::Transverse) return {0.5 * (a.x + b.x), 0.5 * (a.y + b.y)};
+  if (vertical)
+    return {a.x, a.y + 0.5 * std::clamp(b.y - a.y, 0.0, static_cast<double>(p.spacing))};
   return {a.x + 0.5 * std::clamp(b.x - a.x, 0.0, static_cast<double>(p.spacing)), a.y};
 }
 
@@ -418,6 +441,107 @@ void place_break_labels(Frame& frame, const PanelLayout& p, int first, double be
   }
 }
 
+// The vertical view's labels (issue #22): a column right of the hanging chain, each label as
+// near its break's height as it can be without its box meeting another's; leaders run from
+// the pointers (right of the chain, at x `from_x`) across the gap to the labels. Same rules
+// as place_break_labels otherwise: the first break's label always, in bold over an accent
+// leader; later ones by time where they fit; the rest counted in "+k more" (or, when that
+// finds no room, in the first label's text).
+template <class AnchorOf>
+void place_break_labels_beside(Frame& frame, const PanelLayout& p, int first, double from_x,
+                               const AnchorOf& anchor_of) {
+  const std::vector<BreakEvent>& breaks = frame.out.breaks_shown;
+  Layer& marks = frame.layer(kLayerMarks);
+  const SnapshotLayout& l = frame.layout;
+  const double ts = l.text_size, px = l.font_px;
+  std::vector<int> order{first};
+  for (int k = 0; k < static_cast<int>(breaks.size()); ++k)
+    if (k != first) order.push_back(k);
+  std::stable_sort(order.begin() + 1, order.end(),
+                   [&](int a, int b) { return breaks[a].tau < breaks[b].tau; });
+  // A label's box: ascent to descent of either face, `above` over the top of its capitals.
+  double above = 0.0, under = 0.0;
+  for (FontFace face : {FontFace::Sans, FontFace::Bold}) {
+    const Font& font = Font::get(face);
+    const double ascent = font.ascent(l.font_px), cap = font.cap_height(l.font_px);
+    above = std::max(above, ascent - cap);
+    under = std::max(under, cap + (px - ascent));
+  }
+  const double box_h = above + under, sep = 0.15 * ts;
+  const double x = p.labels_x, y_min = p.top, y_max = p.bottom;  // boxes stay in the panel
+  std::vector<LabelBox> placed;
+  // The free box top nearest `want` (the top of a box centred on the anchor), or NaN.
+  const auto slot = [&](double want, double w) {
+    std::vector<double> tries{want};
+    for (const LabelBox& b : placed) {
+      tries.push_back(b.bottom() + sep);
+      tries.push_back(b.y - sep - box_h);
+    }
+    double best = std::numeric_limits<double>::quiet_NaN();
+    for (double y : tries) {
+      y = std::clamp(y, y_min, std::max(y_min, y_max - box_h));
+      const LabelBox box{x, y, w, box_h};
+      bool free = true;
+      for (const LabelBox& b : placed) free = free && !box.intersects(b);
+      if (free && !(std::abs(y - want) >= std::abs(best - want))) best = y;
+    }
+    return best;
+  };
+  struct Placed {
+    int k;
+    double y;
+  };
+  std::vector<Placed> labels;
+  int dropped = 0;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const BreakEvent& b = breaks[order[i]];
+    const double w =
+        text_width(break_text(b, i == 0), l.font_px, i == 0 ? FontFace::Bold : FontFace::Sans);
+    const double want = anchor_of(b).y - 0.5 * ts - above;
+    double y = slot(want, w);
+    if (i == 0 && std::isnan(y)) y = std::clamp(want, y_min, std::max(y_min, y_max - box_h));
+    if (std::isnan(y)) {
+      ++dropped;
+      continue;
+    }
+    placed.push_back(LabelBox{x, y, w, box_h});
+    labels.push_back({order[i], y + above});
+  }
+  const auto more_text = [](int k) {
+    return format_count(k == 1 ? "+%d more break" : "+%d more breaks", k);
+  };
+  bool more_in_first = false;
+  if (dropped > 0) {
+    const double y = slot(y_max - box_h, text_width(more_text(dropped), l.font_px));
+    if (std::isnan(y)) {
+      more_in_first = true;
+    } else {
+      marks.labels.push_back(
+          Label{more_text(dropped), f(x), f(y + above), l.font_px, frame.pal.dim_text});
+      frame.out.break_labels.push_back(BreakLabelBox{
+          -1, false, LabelBox{x, y, text_width(more_text(dropped), l.font_px), box_h}});
+    }
+  }
+  frame.out.breaks_unlabelled = dropped;
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    const bool is_first = i == 0;
+    const BreakEvent& b = breaks[labels[i].k];
+    std::string text = break_text(b, is_first);
+    if (is_first && more_in_first) text += format_count(" (+%d more)", dropped);
+    const FontFace face = is_first ? FontFace::Bold : FontFace::Sans;
+    const Point a = anchor_of(b);
+    const double mid = labels[i].y + 0.5 * ts;  // the middle of the capitals
+    marks.segments.push_back(Segment{f(from_x), f(a.y), f(x - 0.3 * ts), f(mid),
+                                     is_first ? f(std::max(2.0, 0.12 * ts)) : 1.0f,
+                                     is_first ? frame.pal.first_break : frame.pal.later_break});
+    marks.labels.push_back(Label{text, f(x), f(labels[i].y), l.font_px,
+                                 is_first ? frame.pal.text : frame.pal.dim_text, face});
+    frame.out.break_labels.push_back(
+        BreakLabelBox{b.spring, is_first,
+                      LabelBox{x, labels[i].y - above, text_width(text, l.font_px, face), box_h}});
+  }
+}
+
 void draw_breaks(Frame& frame, const PanelLayout& p, const Placer& at) {
   const std::vector<BreakEvent>& breaks = frame.out.breaks_shown;
   if (breaks.empty()) return;
@@ -478,14 +602,22 @@ void draw_breaks(Frame& frame, const PanelLayout& p, const Placer& at) {
                                 frame.out.ribbon ? 0.5 * p.ribbon_width : 0.0) +
                        2.0;
   const double tri_h = 0.6 * ts, tri_w = 0.35 * ts;
+  const bool vertical = p.view == View::Vertical;
   const auto anchor_of = [&](const BreakEvent& b) {
     Point a = break_anchor(frame, p, at, b.spring);
-    a.x = std::clamp(a.x, static_cast<double>(l.x_wall), W - static_cast<double>(l.margin));
+    if (!vertical)
+      a.x = std::clamp(a.x, static_cast<double>(l.x_wall), W - static_cast<double>(l.margin));
     a.y = std::clamp(a.y, static_cast<double>(p.top), static_cast<double>(p.bottom));
     return a;
   };
   const auto pointer = [&](const BreakEvent& b, const Color& colour) {
     const Point a = anchor_of(b);
+    if (vertical) {  // right of the chain, pointing left at the break
+      const double tip = a.x + clear, base = tip + tri_h;
+      marks.triangles.push_back(
+          Triangle{{f(tip), f(base), f(base)}, {f(a.y), f(a.y - tri_w), f(a.y + tri_w)}, colour});
+      return;
+    }
     const double tip = a.y + clear, base = tip + tri_h;
     marks.triangles.push_back(
         Triangle{{f(a.x), f(a.x - tri_w), f(a.x + tri_w)}, {f(tip), f(base), f(base)}, colour});
@@ -494,7 +626,11 @@ void draw_breaks(Frame& frame, const PanelLayout& p, const Placer& at) {
     if (k != first) pointer(breaks[k], frame.pal.later_break);
   pointer(breaks[first], frame.pal.first_break);
   if (l.panel_count == 2 && p.view == View::Transverse) return;
-  place_break_labels(frame, p, first, clear + tri_h, anchor_of);
+  if (vertical) {
+    place_break_labels_beside(frame, p, first, p.chain_x + clear + tri_h, anchor_of);
+  } else {
+    place_break_labels(frame, p, first, clear + tri_h, anchor_of);
+  }
 }
 
 // The pull: an arrow at bead N whose length is f / force_range of the longest arrow, after
@@ -509,8 +645,9 @@ void draw_force(Frame& frame, const PanelLayout& p, const Placer& at) {
   Layer& layer = frame.layer(kLayerForce);
   const SnapshotLayout& l = frame.layout;
   const double ts = l.text_size;
-  const bool across = p.view == View::Transverse;
-  const double ux = across ? 0.0 : 1.0, uy = across ? -1.0 : 0.0;  // +psi on screen
+  const bool across = p.view == View::Transverse, vertical = p.view == View::Vertical;
+  // +psi on screen: right, up (transverse) or down (vertical: the pull hangs from bead N).
+  const double ux = across || vertical ? 0.0 : 1.0, uy = across ? -1.0 : vertical ? 1.0 : 0.0;
   const Point n = at.at(frame.params.beads);
   const auto along = [&](double d) { return Point{n.x + ux * d, n.y + uy * d}; };
   double start = p.bead_radius;
@@ -551,8 +688,10 @@ void draw_force(Frame& frame, const PanelLayout& p, const Placer& at) {
   std::string label = text;
   if (const auto m = label.find('-'); m != std::string::npos) label.replace(m, 1, "\u2212");
   const double clear = std::max(static_cast<double>(p.bead_radius), hw);
-  const Point where = across ? Point{n.x + clear + 0.5 * ts, n.y - 0.5 * ts}
-                             : Point{n.x + start, n.y - clear - 1.6 * ts};
+  const Point where =
+      across     ? Point{n.x + clear + 0.5 * ts, n.y - 0.5 * ts}
+      : vertical ? Point{n.x + clear + 0.5 * ts, n.y + start + 0.5 * std::abs(length) - 0.5 * ts}
+                 : Point{n.x + start, n.y - clear - 1.6 * ts};
   layer.labels.push_back(Label{label, f(where.x), f(where.y), l.font_px, frame.pal.text});
 }
 
@@ -562,11 +701,12 @@ void draw_chain_panel(Frame& frame, const PanelLayout& p) {
   // Where bead 0 at rest would be: the wall's face, or left of it by the beads a zoom skips
   // (longitudinal: and by the first drawn bead's displacement, so the stretch stays in view).
   const SnapshotLayout& l = frame.layout;
-  const bool transverse = p.view == View::Transverse;
+  const bool transverse = p.view == View::Transverse, vertical = p.view == View::Vertical;
   const int first = l.first_bead;
   const double shift = first > 0 && !transverse ? frame.state.psi[first - 1] : 0.0;
-  const double origin = l.x_wall - (first + shift) * p.spacing;
-  const Placer at{frame.state.psi, origin, p.spacing, p.psi_scale, p.centre_y, transverse};
+  const double origin = (vertical ? p.ceiling_y : l.x_wall) - (first + shift) * p.spacing;
+  const Placer at{
+      frame.state.psi, origin, p.spacing, p.psi_scale, vertical ? p.chain_x : p.centre_y, p.view};
   if (frame.out.ribbon) {
     draw_ribbon(frame, p, origin);
   } else {

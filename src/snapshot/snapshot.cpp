@@ -27,6 +27,8 @@ bool parse_view(const std::string& text, View& out) {
     out = View::Transverse;
   } else if (text == "both") {
     out = View::Both;
+  } else if (text == "vertical") {
+    out = View::Vertical;
   } else {
     return false;
   }
@@ -41,6 +43,8 @@ const char* view_name(View view) {
       return "transverse";
     case View::Both:
       return "both";
+    case View::Vertical:
+      return "vertical";
   }
   return "?";
 }
@@ -70,10 +74,16 @@ PanelLayout panel_layout(View view, double top, double bottom, bool two_panels,
   const double ts = l.text_size;
   if (two_panels) top = std::min(bottom - 1.0, top + 1.6 * ts);
   const double h = bottom - top;
-  const double usable = l.x_right - l.x_wall;
-  // Longitudinal: bead N lands on x_right when psi_N = psi_range, the largest extension.
-  const double spacing =
-      view == View::Longitudinal ? usable / (beads + psi_range) : usable / beads;
+  // Vertical: a ceiling as thick as the wall is wide, then the chain down to the room the
+  // string, the longest arrow and bead N's radius need.
+  const bool vertical = view == View::Vertical;
+  const double ceiling_y = top + (l.x_wall - l.margin);
+  const double usable = vertical ? std::max(1.0, bottom - ceiling_y - l.arrow_max -
+                                                     l.string_length - 0.5 * ts - kMaxBeadRadius)
+                                 : l.x_right - l.x_wall;
+  // Longitudinal (vertical): bead N lands on x_right (the bottom of the room) when psi_N =
+  // psi_range, the largest extension.
+  const double spacing = view == View::Transverse ? usable / beads : usable / (beads + psi_range);
   // A chain that stretches a lot would get tiny beads at rest; size them for the geometric
   // mean of the rest and the fully stretched spacing (still below half the rest spacing).
   const double typical = std::min(std::sqrt(spacing * usable / beads), 1.6 * spacing);
@@ -100,7 +110,20 @@ PanelLayout panel_layout(View view, double top, double bottom, bool two_panels,
   p.coils = free_length >= 20.0
                 ? static_cast<float>(std::clamp(std::round(free_length / 6.0), 4.0, 8.0))
                 : 0.0f;
-  if (view == View::Longitudinal) {
+  if (vertical) {
+    // The chain hangs in a column a third of the way across; its break labels stand in a
+    // column right of it (the pointers between), the force's value right of the arrow.
+    p.chain_x = static_cast<float>(std::round(0.3 * style.width));
+    p.ceiling_y = static_cast<float>(ceiling_y);
+    p.centre_y = p.ceiling_y;
+    p.psi_scale = p.spacing;
+    p.ribbon_width = static_cast<float>(std::clamp(0.1 * h, 4.0, 30.0));
+    p.wall_half_height = static_cast<float>(std::max(4.0 * r_max, 3.0 * ts));  // the ceiling's
+    p.half_height = static_cast<float>(0.5 * h);
+    p.markers_top = p.ceiling_y;
+    const double clear = std::max(r_max, 0.5 * p.ribbon_width) + 2.0;
+    p.labels_x = static_cast<float>(p.chain_x + clear + 0.6 * ts + 1.5 * ts);
+  } else if (view == View::Longitudinal) {
     // The chain sits a little above the middle: break markers stack below it.
     const double centre = top + 0.42 * h;
     p.centre_y = static_cast<float>(centre);
@@ -127,12 +150,12 @@ PanelLayout panel_layout(View view, double top, double bottom, bool two_panels,
   return p;
 }
 
-void add_wall(Layer& layer, const SnapshotLayout& l, const PanelLayout& p, const Palette& pal) {
-  const double x0 = l.margin, x1 = l.x_wall;
-  const double y0 = p.centre_y - p.wall_half_height, y1 = p.centre_y + p.wall_half_height;
+// A hatched block (the wall, the ceiling): a filled rectangle crossed at 45 degrees by the
+// lines x + y = k, clipped to it.
+void add_hatched_block(Layer& layer, double x0, double y0, double x1, double y1,
+                       const SnapshotLayout& l, const Palette& pal) {
   layer.rects.push_back(Rect{static_cast<float>(x0), static_cast<float>(y0),
                              static_cast<float>(x1 - x0), static_cast<float>(y1 - y0), pal.wall});
-  // Hatching at 45 degrees: the lines x + y = k, clipped to the wall's rectangle.
   const double step = std::max(5.0, std::round(0.5 * l.text_size));
   const float width = static_cast<float>(std::max(1.0, l.text_size / 10.0));
   for (double k = x0 + y0 + step; k < x1 + y1; k += step) {
@@ -142,8 +165,22 @@ void add_wall(Layer& layer, const SnapshotLayout& l, const PanelLayout& p, const
                                      static_cast<float>(hi), static_cast<float>(k - hi), width,
                                      pal.hatch});
   }
-  layer.segments.push_back(
-      Segment{l.x_wall, static_cast<float>(y0), l.x_wall, static_cast<float>(y1), 2.0f, pal.wall_face});
+}
+
+void add_wall(Layer& layer, const SnapshotLayout& l, const PanelLayout& p, const Palette& pal) {
+  const double y0 = p.centre_y - p.wall_half_height, y1 = p.centre_y + p.wall_half_height;
+  add_hatched_block(layer, l.margin, y0, l.x_wall, y1, l, pal);
+  layer.segments.push_back(Segment{l.x_wall, static_cast<float>(y0), l.x_wall,
+                                   static_cast<float>(y1), 2.0f, pal.wall_face});
+}
+
+// The vertical view's ceiling (issue #22): the wall turned upright, a hatched block as thick
+// as the wall over the chain's column, whose lower face is bead 0.
+void add_ceiling(Layer& layer, const SnapshotLayout& l, const PanelLayout& p, const Palette& pal) {
+  const double x0 = p.chain_x - p.wall_half_height, x1 = p.chain_x + p.wall_half_height;
+  add_hatched_block(layer, x0, p.ceiling_y - (l.x_wall - l.margin), x1, p.ceiling_y, l, pal);
+  layer.segments.push_back(Segment{static_cast<float>(x0), p.ceiling_y, static_cast<float>(x1),
+                                   p.ceiling_y, 2.0f, pal.wall_face});
 }
 
 std::string format(const char* fmt, double value) {
@@ -191,24 +228,28 @@ void add_legend(Layer& layer, const SnapshotLayout& l, const SnapshotStyle& styl
   }
   const float mid_y = l.legend_y + 0.5f * (l.legend_h - ts);
   const std::string left = "compression", right = "tension";
+  layer.labels.push_back(Label{left, l.legend_x - 0.6f * ts - text_width(left, l.font_px), mid_y,
+                               l.font_px, pal.text});
   layer.labels.push_back(
-      Label{left, l.legend_x - 0.6f * ts - text_width(left, l.font_px), mid_y, l.font_px, pal.text});
-  layer.labels.push_back(Label{right, l.legend_x + l.legend_w + 0.6f * ts, mid_y, l.font_px, pal.text});
+      Label{right, l.legend_x + l.legend_w + 0.6f * ts, mid_y, l.font_px, pal.text});
 }
 
 // Zoom: a thin bar standing for the whole chain (wall at its left), the drawn stretch marked
 // on it in the accent colour, and which springs those are.
 void add_overview(Layer& layer, const SnapshotLayout& l, int beads, const Palette& pal) {
-  layer.rects.push_back(Rect{l.overview_x, l.overview_y, l.overview_w, l.overview_h, pal.rest_line});
+  layer.rects.push_back(
+      Rect{l.overview_x, l.overview_y, l.overview_w, l.overview_h, pal.rest_line});
   const float x0 = l.overview_x + l.overview_w * static_cast<float>(l.first_bead) / beads;
   const float x1 = l.overview_x + l.overview_w * static_cast<float>(l.last_bead) / beads;
   const float w = std::max(2.0f, x1 - x0);
   layer.rects.push_back(Rect{std::min(x0, l.overview_x + l.overview_w - w), l.overview_y - 1.0f, w,
                              l.overview_h + 2.0f, pal.marker});
   char text[96];
-  std::snprintf(text, sizeof text, "springs %d\u2013%d of %d", l.first_bead + 1, l.last_bead, beads);
+  std::snprintf(text, sizeof text, "springs %d\u2013%d of %d", l.first_bead + 1, l.last_bead,
+                beads);
   const float tw = text_width(text, l.font_px);
-  layer.labels.push_back(Label{text, std::round(0.5f * (l.overview_x + l.overview_w - tw + l.overview_x)),
+  layer.labels.push_back(Label{text,
+                               std::round(0.5f * (l.overview_x + l.overview_w - tw + l.overview_x)),
                                l.margin, l.font_px, pal.dim_text});
 }
 
@@ -260,6 +301,11 @@ SnapshotLayout layout_for(const SnapshotStyle& style, const ChainParams& params,
   // Right of bead N: its radius, the string, the longest arrow and a gap.
   l.x_right =
       static_cast<float>(W - margin - l.arrow_max - l.string_length - 0.5 * ts - kMaxBeadRadius);
+  if (style.view == View::Vertical) {  // below bead N: a frame is wide, so scale by its height
+    l.arrow_max = static_cast<float>(std::clamp(std::round(0.12 * H), 20.0, 160.0));
+    if (params.pull_string)
+      l.string_length = static_cast<float>(std::clamp(std::round(0.05 * H), 12.0, 60.0));
+  }
 
   l.legend_h = static_cast<float>(std::round(1.2 * ts));
   l.legend_y = static_cast<float>(H - margin - 1.6 * ts - l.legend_h);
@@ -290,11 +336,16 @@ SnapshotLayout layout_for(const SnapshotStyle& style, const ChainParams& params,
     l.panels[0] = panel_layout(style.view, top, bottom, false, l, style, params.beads, sizes);
     l.panel_count = 1;
   }
-  for (int i = 0; i < l.panel_count; ++i) l.ribbon |= l.panels[i].spacing < kRibbonSpacing;
+  // The ribbon is drawn in pixel columns, so only across the frame: a vertical chain keeps
+  // its beads however close they come.
+  for (int i = 0; i < l.panel_count; ++i)
+    l.ribbon |= l.panels[i].view != View::Vertical && l.panels[i].spacing < kRibbonSpacing;
   return l;
 }
 
-Color to_color(Rgb8 c, float alpha) { return Color{c.r / 255.0f, c.g / 255.0f, c.b / 255.0f, alpha}; }
+Color to_color(Rgb8 c, float alpha) {
+  return Color{c.r / 255.0f, c.g / 255.0f, c.b / 255.0f, alpha};
+}
 
 Palette palette(ThemeName name) {
   const Theme& t = theme(name);
@@ -346,7 +397,8 @@ void add_slow_motion_tag(RenderSnapshot& snap, double speed, ThemeName theme) {
   Layer& marks = snap.layers[kLayerMarks];
   marks.labels.push_back(Label{text, x, l.margin, l.font_px, pal.text});
   const float y = l.margin + 1.5f * l.text_size;
-  marks.rects.push_back(Rect{x, y, w, std::max(2.0f, 0.2f * l.text_size), to_color(cb::theme(theme).accent)});
+  marks.rects.push_back(
+      Rect{x, y, w, std::max(2.0f, 0.2f * l.text_size), to_color(cb::theme(theme).accent)});
 }
 
 RenderSnapshot build_snapshot(const ChainState& state, const ChainParams& params, double force,
@@ -398,7 +450,13 @@ RenderSnapshot build_snapshot(const ChainState& state, const ChainParams& params
   Layer& back = frame.layer(kLayerFrame);
   for (int i = 0; i < l.panel_count; ++i) {
     const PanelLayout& p = l.panels[i];
-    if (l.first_bead == 0) add_wall(back, l, p, pal);
+    if (l.first_bead == 0) {
+      if (p.view == View::Vertical) {
+        add_ceiling(back, l, p, pal);
+      } else {
+        add_wall(back, l, p, pal);
+      }
+    }
     if (p.view == View::Transverse) {  // the rest line psi = 0, a reference for the eye
       back.segments.push_back(
           Segment{l.x_wall, p.centre_y, l.x_right, p.centre_y, 1.0f, pal.rest_line});

@@ -17,7 +17,9 @@ namespace cb {
 
 struct OverlayData;  // overlay/overlay_data.h: what the HUD and plots show (plain data)
 
-enum class View { Longitudinal, Transverse, Both };
+// Vertical (issue #22): the longitudinal view turned upright, for a hanging chain (the default
+// when chain.gravity > 0): bead 0 is the ceiling, beads go down, the force pulls down.
+enum class View { Longitudinal, Transverse, Both, Vertical };
 bool parse_view(const std::string& text, View& out);
 const char* view_name(View view);
 
@@ -89,8 +91,9 @@ enum SnapshotLayer : int {
 
 // One chain panel. Longitudinal: bead j at x_wall + (j + psi_j) * spacing, y = centre_y.
 // Transverse: bead j at x_wall + j * spacing, y = centre_y - psi_j * psi_scale.
+// Vertical: bead j at x = chain_x, y = ceiling_y + (j + psi_j) * spacing.
 struct PanelLayout {
-  View view = View::Longitudinal;  // Longitudinal or Transverse, never Both
+  View view = View::Longitudinal;  // Longitudinal, Transverse or Vertical, never Both
   float top = 0, bottom = 0;       // the panel's extent, pixels
   float centre_y = 0;              // the chain's rest line
   float half_height = 0;           // transverse: pixels from the rest line to |psi| = psi_range
@@ -103,6 +106,9 @@ struct PanelLayout {
   float ribbon_width = 0;  // thickness of the strain ribbon, pixels
   float wall_half_height = 0;
   float markers_top = 0;  // y of the first row of break markers
+  // Vertical: the chain's column and the ceiling's face (bead 0), and the left edge of the
+  // column of break labels right of the chain.
+  float chain_x = 0, ceiling_y = 0, labels_x = 0;
 };
 
 // Where everything goes, from the style and N alone: the same for every frame of a video.
@@ -148,7 +154,9 @@ struct RenderSnapshot {
   // "+k more" label (or in the first label's text when even that found no room).
   std::vector<BreakLabelBox> break_labels;
   int breaks_unlabelled = 0;
-  double arrow_length = 0.0;  // force arrow, tail to tip, pixels (< 0 points left; 0: none)
+  // Force arrow, tail to tip, pixels: > 0 along +psi (right; vertical view: down), < 0
+  // against it; 0: none.
+  double arrow_length = 0.0;
   SnapshotLayout layout;
   std::vector<Layer> layers;  // kLayerCount layers, in SnapshotLayer order
   // The HUD and plots drawn over the frame by the overlay (src/overlay), filled on the physics

@@ -92,6 +92,7 @@ void status_lines(const ViewerModel& model, const Session& session) {
 const char* next_view(const std::string& view) {
   if (view == "longitudinal") return "transverse";
   if (view == "transverse") return "both";
+  if (view == "both") return "vertical";
   return "longitudinal";
 }
 
@@ -130,7 +131,7 @@ void draw_controls(ViewerModel& model, SceneDesc& draft, const Session& session,
     requests.apply_settings |= drive_controls(draft.drive);
   }
   if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) {
-    for (const char* v : {"longitudinal", "transverse", "both"}) {
+    for (const char* v : {"longitudinal", "transverse", "both", "vertical"}) {
       if (ImGui::RadioButton(v, draft.render.view == v) && draft.render.view != v) {
         draft.render.view = v;
         requests.view_changed = true;

@@ -25,6 +25,7 @@ int spring_at(const SnapshotLayout& layout, const ChainState& state, float x, fl
   const int beads = static_cast<int>(state.psi.size());
   for (int p = 0; p < layout.panel_count; ++p) {
     const PanelLayout& panel = layout.panels[p];
+    if (panel.view == View::Vertical) continue;  // not pickable yet (issue #22)
     if (y < panel.top || y > panel.bottom) continue;
     for (int j = 1; j <= beads; ++j) {
       const SpringSpan span = spring_span(layout, state, p, j);

@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   app.add_option("--size", o.render.frame.size, "Frame size WIDTHxHEIGHT (default: the scene's)");
   app.add_option("-q,--quality", o.render.frame.quality, "Preset l, m, h or k, as for render");
-  app.add_option("--view", o.render.frame.view, "longitudinal, transverse or both");
+  app.add_option("--view", o.render.frame.view, "longitudinal, transverse, both or vertical");
   app.add_option("--theme", o.render.frame.theme, "dark (default) or light")
       ->check(CLI::IsMember({"dark", "light"}));
   auto* no_overlay = app.add_flag("--no-overlay", o.render.no_overlay, "No HUD or plots");

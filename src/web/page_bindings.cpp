@@ -120,7 +120,8 @@ class Page {
   // The energy `run`'s summary reports (units K l^2): the state's whole history in five numbers.
   emscripten::val energy() const {
     const ChainState& st = session_.sim().state();
-    const EnergyParts parts = cb::energy(st);
+    // The chain's own masses, stiffness, springs' law and weight, as run's summary counts them.
+    const EnergyParts parts = cb::energy(st, session_.scene().chain);
     emscripten::val o = emscripten::val::object();
     o.set("kinetic", parts.kinetic);
     o.set("potential", parts.potential);
