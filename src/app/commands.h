@@ -34,8 +34,14 @@ struct RunOptions {
   // --resume: the checkpointed run's).
   double checkpoint_every = -1;
   std::string resume;  // --resume FILE: continue that checkpoint's run
+  // --submit slurm: one self-requeueing batch job instead of running here (run_submit.cpp).
+  std::string submit;
+  std::string time;                      // the job's --time; empty: the partition's default
+  bool wait = false;                     // follow the job until it leaves the queue
+  std::vector<std::string> sbatch_args;  // extra #SBATCH lines
 };
 int run_command(const RunOptions& options);
+int submit_run(const RunOptions& options);  // run --submit
 inline constexpr double kCheckpointEvery = 600;
 
 struct SweepOptions {

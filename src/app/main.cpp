@@ -102,6 +102,17 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--threads", run.threads, "Threads for the integrator (helps from N ~ 10^5)")
       ->check(CLI::Range(1, 256));
   run_cmd->add_flag("--quiet,-q", run.quiet, "No progress output");
+  run_cmd
+      ->add_option("--submit", run.submit,
+                   "slurm: run as a Slurm job (script beside the CSV) that checkpoints before "
+                   "its time limit, requeues itself and resumes until it finishes")
+      ->check(CLI::IsMember({"slurm"}));
+  run_cmd->add_option("--time", run.time,
+                      "With --submit: the job's time limit (sbatch --time), e.g. 04:00:00");
+  run_cmd->add_flag("--wait", run.wait, "With --submit: follow the job until it is done");
+  run_cmd->add_option("--sbatch-arg", run.sbatch_args,
+                      "With --submit: an sbatch option for the script, e.g. "
+                      "--sbatch-arg=--partition=long (repeatable)");
 
   cb::SweepOptions sweep;
   std::vector<std::string> varies, values;

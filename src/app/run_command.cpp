@@ -230,6 +230,9 @@ int run_loaded(const RunOptions& o, const SceneDesc& scene, const Checkpoint* re
 }  // namespace
 
 int run_command(const RunOptions& o) {
+  if (!o.submit.empty()) return submit_run(o);
+  if (!o.time.empty() || o.wait || !o.sbatch_args.empty())
+    throw SceneError("run: --time, --wait and --sbatch-arg go with --submit slurm");
   if (o.resume.empty()) {
     if (o.scene.empty()) throw SceneError("run: give a scene file, or --resume CHECKPOINT");
     return run_loaded(o, load_scene(o.scene, o.overrides), nullptr);
