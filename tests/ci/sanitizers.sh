@@ -75,11 +75,13 @@ asan() {
   asan_env
   # Left out (the Quick start's Release ctest runs both): deb_package (cpack; no code of ours
   # runs in it) and slurm_sweep (shell around the sweep the [cli] tests cover; its speed part
-  # sweeps 32 points of a 3000-bead chain twice: over 8 CPU minutes under ASan).
+  # sweeps 32 points of a 3000-bead chain twice: over 8 CPU minutes under ASan), and slurm_run
+  # (the same private cluster around `run --submit`, whose checkpoint and resume run_checkpoint
+  # covers here; its TERM is timed against a periodic checkpoint).
   # Two passes: the tests that time a signal or the wall clock (WALL_CLOCK_TESTS) alone, one
   # at a time; the rest two at a time, one per core (the suite is ~18 CPU minutes under ASan).
   ctest --test-dir build-asan --output-on-failure --timeout 1500 -j "${CI_JOBS:-$(nproc)}" \
-    -E "^deb_package\$|^slurm_sweep\$|$WALL_CLOCK_TESTS"
+    -E "^deb_package\$|^slurm_sweep\$|^slurm_run\$|$WALL_CLOCK_TESTS"
   ctest --test-dir build-asan --output-on-failure --timeout 1500 -R "$WALL_CLOCK_TESTS"
   stamp "asan: done"
 }
