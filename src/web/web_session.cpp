@@ -24,6 +24,7 @@ constexpr double kPrePassBeadSteps = 3e8;
 // The breaking map: this many exact first breaks, for chains up to this long.
 constexpr int kMapSamples = 60;
 constexpr int kMapMaxBeads = 100;
+constexpr double kMapMaxZetaPerBead = 12.0;  // the paper's Fig. 4 spans zeta_c < 8N
 
 }  // namespace
 
@@ -150,7 +151,11 @@ const WebBreakMap& WebSession::break_map() const {
       c.beads <= kMapMaxBeads && scene_.drive.beta > 0) {
     map.beads = c.beads;
     map.current = c.threshold / scene_.drive.beta;
-    const double hi = std::max(1.5 * map.current, 6.0 * c.beads);
+    // At most kMapMaxZetaPerBead N: an exact first break searches up to tau = 4 zeta_c + 8N,
+    // so a threshold of 1e9 would hold the page for hours; a current zeta_c off the map is
+    // simply not marked.
+    const double hi = std::min(std::max(1.5 * map.current, 6.0 * c.beads),
+                               kMapMaxZetaPerBead * c.beads);
     for (int i = 1; i <= kMapSamples; ++i) {
       const double zeta = hi * i / kMapSamples;
       const FirstBreak b = ramp_first_break(c.beads, c.gamma, zeta);
