@@ -7,23 +7,22 @@
 #include <string>
 #include <vector>
 
+#include "physics/threshold_draw.h"
 #include "scene/scene.h"
 #include "scene/scene_writer.h"
-#include "scene/threshold_draw.h"
 #include "scene_test_support.h"
 
 using Catch::Matchers::Contains;
 using namespace cb::scene_test;
-namespace sd = cb::scene_detail;
 
 TEST_CASE("thresholds: the uniform number of (seed, spring) is the documented hash",
           "[scene][flaws]") {
   // Expected: SplitMix64's finaliser applied as in threshold_draw.cpp, written again in
   // Python with arbitrary-precision integers masked to 64 bits (exact, no rounding but the
   // final conversion, which both do the same way).
-  CHECK(sd::uniform_open01(1, 1) == 0.6871007905211135);
-  CHECK(sd::uniform_open01(1, 2) == 0.9688225399024724);
-  CHECK(sd::uniform_open01(7, 30) == 0.16575583810128286);
+  CHECK(cb::uniform_open01(1, 1) == 0.6871007905211135);
+  CHECK(cb::uniform_open01(1, 2) == 0.9688225399024724);
+  CHECK(cb::uniform_open01(7, 30) == 0.16575583810128286);
 }
 
 TEST_CASE("thresholds: 10^5 Weibull draws pass a Kolmogorov-Smirnov test", "[scene][flaws]") {
@@ -36,7 +35,7 @@ TEST_CASE("thresholds: 10^5 Weibull draws pass a Kolmogorov-Smirnov test", "[sce
     INFO("modulus " << m);
     std::vector<double> x(n);
     for (int j = 0; j < n; ++j)
-      x[j] = sd::weibull_quantile(sd::uniform_open01(42, static_cast<std::uint64_t>(j + 1)), m);
+      x[j] = cb::weibull_quantile(cb::uniform_open01(42, static_cast<std::uint64_t>(j + 1)), m);
     std::sort(x.begin(), x.end());
     double d = 0.0;
     for (int j = 0; j < n; ++j) {
@@ -49,11 +48,11 @@ TEST_CASE("thresholds: 10^5 Weibull draws pass a Kolmogorov-Smirnov test", "[sce
 
 TEST_CASE("thresholds: the normal quantile matches scipy's norm.ppf", "[scene][flaws]") {
   // scipy.stats.norm.ppf (scipy 1.10), to 4 ulps.
-  CHECK(sd::normal_quantile(0.975) == Approx(1.959963984540054).epsilon(1e-15));
-  CHECK(sd::normal_quantile(0.3) == Approx(-0.5244005127080407).epsilon(1e-15));
-  CHECK(sd::normal_quantile(1e-9) == Approx(-5.997807015007686).epsilon(1e-15));
-  CHECK(sd::normal_quantile(1e-300) == Approx(-37.0470962993612).epsilon(1e-14));
-  CHECK(sd::normal_quantile(0.5) == 0.0);
+  CHECK(cb::normal_quantile(0.975) == Approx(1.959963984540054).epsilon(1e-15));
+  CHECK(cb::normal_quantile(0.3) == Approx(-0.5244005127080407).epsilon(1e-15));
+  CHECK(cb::normal_quantile(1e-9) == Approx(-5.997807015007686).epsilon(1e-15));
+  CHECK(cb::normal_quantile(1e-300) == Approx(-37.0470962993612).epsilon(1e-14));
+  CHECK(cb::normal_quantile(0.5) == 0.0);
 }
 
 namespace {

@@ -14,13 +14,11 @@
 #include "drive/drive.h"
 #include "physics/integrator.h"
 #include "physics/run_loop.h"
+#include "physics/threshold_draw.h"
 #include "physics/threshold_ensemble.h"
-#include "scene/threshold_draw.h"
 #include "test_support.h"
 
 namespace {
-
-namespace sd = cb::scene_detail;
 
 // Integrator alone on `chain`: the end of run_until(at_first_break), as `run` and sweep see it.
 cb::LaneEnd alone(const cb::ChainParams& chain, const cb::DriveDesc& drive, double dt,
@@ -68,7 +66,7 @@ cb::ChainParams flawed(int seed, double shape, cb::BreakMode mode = cb::BreakMod
   cb::ChainParams p;
   p.beads = 30;
   p.break_on = mode;
-  p.thresholds = sd::draw_thresholds(sd::ThresholdDist::Weibull, 1.0, shape,
+  p.thresholds = cb::draw_thresholds(cb::ThresholdDist::Weibull, 1.0, shape,
                                      static_cast<std::uint64_t>(seed), p.beads);
   p.threshold = *std::min_element(p.thresholds.begin(), p.thresholds.end());
   p.normalize();
@@ -198,13 +196,13 @@ TEST_CASE("the same seed gives the same thresholds and first breaks on 1 and 2 t
   constexpr int kSeeds = 64;
   std::vector<std::vector<double>> one(kSeeds), two(kSeeds);
   for (int s = 0; s < kSeeds; ++s)
-    one[s] = sd::draw_thresholds(sd::ThresholdDist::Weibull, 1.0, 4.0, 1000 + s, 30);
+    one[s] = cb::draw_thresholds(cb::ThresholdDist::Weibull, 1.0, 4.0, 1000 + s, 30);
   {
     std::vector<std::thread> pool;
     for (int t = 0; t < 2; ++t)
       pool.emplace_back([&, t] {
         for (int s = t; s < kSeeds; s += 2)
-          two[s] = sd::draw_thresholds(sd::ThresholdDist::Weibull, 1.0, 4.0, 1000 + s, 30);
+          two[s] = cb::draw_thresholds(cb::ThresholdDist::Weibull, 1.0, 4.0, 1000 + s, 30);
       });
     for (auto& th : pool) th.join();
   }

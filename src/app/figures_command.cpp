@@ -1,5 +1,5 @@
-// `chainbreak figures`: the paper's Figs. 3-5 and two breaking maps as PNG, SVG and/or PDF
-// (drawn by the cairo backend, src/figure_cairo) + CSV.
+// `chainbreak figures`: the paper's Figs. 3-5, the breaking maps and the one-body windows as
+// PNG, SVG and/or PDF (drawn by the cairo backend, src/figure_cairo) + CSV.
 #include <chrono>
 #include <cstdio>
 #include <filesystem>

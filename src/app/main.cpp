@@ -244,8 +244,9 @@ int main(int argc, char** argv) {
 
   cb::FiguresOptions figures;
   auto* figures_cmd = app.add_subcommand("figures",
-                                         "The paper's Figs. 3-5 and two breaking maps as PNG, SVG "
-                                         "and/or PDF + CSV (numbers behind them)");
+                                         "The paper's Figs. 3-5, the breaking maps (gravity, FPUT, "
+                                         "flaws) and the one-body windows as PNG, SVG and/or PDF "
+                                         "+ CSV (numbers behind them)");
   figures_cmd->add_option("-o,--out", figures.out_dir, "Folder (default renders/figures)");
   figures_cmd->add_option("--only", figures.only, "Comma-separated names, e.g. fig4a,breaking_map");
   figures_cmd

@@ -1,5 +1,5 @@
 // A figure as plain data: panels of series over axes, with no GL and no cairo. Built by
-// figure_specs.h (the paper's Figs. 3-5 and two maps of which part breaks), drawn into PNG,
+// figure_specs.h (the paper's Figs. 3-5 and the maps of which part breaks), drawn into PNG,
 // SVG and PDF by one function of the cairo backend (figure_cairo/figure_draw.h), written as
 // CSV by the app: one struct, every output, so the pictures and the CSV cannot disagree.
 #pragma once

@@ -13,8 +13,8 @@
 #include "drive/drive.h"
 #include "figures/break_maps.h"
 #include "figures/figure_specs.h"
+#include "physics/threshold_draw.h"
 #include "physics/threshold_ensemble.h"
-#include "scene/threshold_draw.h"
 
 namespace cb {
 
@@ -26,9 +26,8 @@ std::vector<double> flaw_thresholds(int count) {
   std::vector<double> all;
   all.reserve(static_cast<std::size_t>(count) * kMapBeads);
   for (int seed = 1; seed <= count; ++seed) {
-    const std::vector<double> t =
-        scene_detail::draw_thresholds(scene_detail::ThresholdDist::Weibull, 1.0, kFlawMapModulus,
-                                      static_cast<std::uint64_t>(seed), kMapBeads);
+    const std::vector<double> t = draw_thresholds(ThresholdDist::Weibull, 1.0, kFlawMapModulus,
+                                                  static_cast<std::uint64_t>(seed), kMapBeads);
     all.insert(all.end(), t.begin(), t.end());
   }
   return all;

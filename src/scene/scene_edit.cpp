@@ -7,10 +7,10 @@
 #include <climits>
 #include <cmath>
 
+#include "physics/threshold_draw.h"
 #include "scene/scene.h"
 #include "scene/scene_reader.h"
 #include "scene/scene_units.h"
-#include "scene/threshold_draw.h"
 
 namespace cb {
 
@@ -84,11 +84,10 @@ bool assign_number(SceneDesc& next, const std::string& key, double value,
       return false;
     ThresholdDraw& draw = *next.threshold_draw;
     draw.seed = static_cast<std::int64_t>(value);
-    const auto dist = draw.dist == "normal" ? scene_detail::ThresholdDist::Normal
-                                            : scene_detail::ThresholdDist::Weibull;
+    const auto dist = draw.dist == "normal" ? ThresholdDist::Normal : ThresholdDist::Weibull;
     ChainParams& p = next.chain;
-    p.thresholds = scene_detail::draw_thresholds(dist, draw.scale, draw.shape,
-                                                 static_cast<std::uint64_t>(draw.seed), p.beads);
+    p.thresholds = draw_thresholds(dist, draw.scale, draw.shape,
+                                   static_cast<std::uint64_t>(draw.seed), p.beads);
     p.threshold = *std::min_element(p.thresholds.begin(), p.thresholds.end());
     p.normalize();
   } else if (key == "chain.beads") {

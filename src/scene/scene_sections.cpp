@@ -10,7 +10,7 @@
 #include <cstdint>
 
 #include "scene/scene_coefficients.h"
-#include "scene/threshold_draw.h"
+#include "physics/threshold_draw.h"
 
 namespace cb::scene_detail {
 

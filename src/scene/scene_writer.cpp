@@ -4,9 +4,9 @@
 #include <filesystem>
 #include <sstream>
 
+#include "physics/threshold_draw.h"
 #include "scene/scene_coefficients.h"
 #include "scene/scene_reader.h"
-#include "scene/threshold_draw.h"
 
 namespace cb {
 
@@ -47,9 +47,8 @@ std::string numbers(const std::vector<double>& values) {
 }
 
 std::vector<double> drawn(const ThresholdDraw& t, int beads) {
-  return scene_detail::draw_thresholds(t.dist == "normal" ? scene_detail::ThresholdDist::Normal
-                                                          : scene_detail::ThresholdDist::Weibull,
-                                       t.scale, t.shape, static_cast<std::uint64_t>(t.seed), beads);
+  return draw_thresholds(t.dist == "normal" ? ThresholdDist::Normal : ThresholdDist::Weibull,
+                         t.scale, t.shape, static_cast<std::uint64_t>(t.seed), beads);
 }
 
 void write_drive(std::ostringstream& out, const SceneDesc& scene) {

@@ -11,12 +11,11 @@
 #include "drive/drive.h"
 #include "physics/integrator.h"
 #include "physics/run_loop.h"
+#include "physics/threshold_draw.h"
 #include "physics/threshold_ensemble.h"
-#include "scene/threshold_draw.h"
 
 namespace {
 
-namespace sd = cb::scene_detail;
 constexpr int kBeads = 30, kSeeds = 10000;
 constexpr double kDt = 0.01, kTEnd = 20000.0;
 
@@ -24,7 +23,7 @@ cb::ChainParams chain_of(int seed) {
   cb::ChainParams p;
   p.beads = kBeads;
   p.gamma = 0.05;
-  p.thresholds = sd::draw_thresholds(sd::ThresholdDist::Weibull, 1.0, 6.0,
+  p.thresholds = cb::draw_thresholds(cb::ThresholdDist::Weibull, 1.0, 6.0,
                                      static_cast<std::uint64_t>(seed), kBeads);
   p.threshold = *std::min_element(p.thresholds.begin(), p.thresholds.end());
   return p;

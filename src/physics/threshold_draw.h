@@ -1,4 +1,4 @@
-// Internal to src/scene: thresholds of a flawed chain drawn at random (issue #23's scene keys
+// Thresholds of a flawed chain drawn at random (issue #23's scene keys
 // chain.threshold_dist, chain.threshold_shape, chain.seed).
 //
 // Design note: a threshold decides where a chain breaks, so the same seed must give the same
@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace cb::scene_detail {
+namespace cb {
 
 enum class ThresholdDist { Weibull, Normal };
 
@@ -36,4 +36,4 @@ double normal_quantile(double p);
 std::vector<double> draw_thresholds(ThresholdDist dist, double scale, double shape,
                                     std::uint64_t seed, int n);
 
-}  // namespace cb::scene_detail
+}  // namespace cb

@@ -1,11 +1,11 @@
 // Random thresholds by (seed, spring), with our own inverse CDFs (threshold_draw.h).
-#include "scene/threshold_draw.h"
+#include "physics/threshold_draw.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-namespace cb::scene_detail {
+namespace cb {
 
 namespace {
 
@@ -69,4 +69,4 @@ std::vector<double> draw_thresholds(ThresholdDist dist, double scale, double sha
   return out;
 }
 
-}  // namespace cb::scene_detail
+}  // namespace cb
