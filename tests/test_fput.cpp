@@ -196,6 +196,34 @@ TEST_CASE("fput: RK4 is fourth order on an anharmonic ramp", "[fput]") {
   CHECK(e4 > 1e-8);  // the nonlinearity is felt: far above rounding
 }
 
+TEST_CASE("fput: RK4 is fourth order on a hanging anharmonic ramp", "[fput][gravity]") {
+  // The hanging chain runs in psi with its weight as a force (issue #24 with #22): the weight's
+  // constant acceleration G must not cost RK4 an order. Softening a = -0.3 with b = 0.5 (a^2 <
+  // 3 b: the tension grows everywhere), from its equilibrium (phi_eq,1 ~ 0.16).
+  cb::ChainParams p = fput_chain(8, -0.3, 0.5);
+  p.gravity = 0.02;
+  const double t_end = 20.0;
+  auto phi_at = [&](double dt) {
+    cb::Integrator sim(p, cb::make_forcing(ramp(0.05)), {dt});
+    REQUIRE(sim.advance_to(static_cast<std::int64_t>(std::llround(t_end / dt))));
+    std::vector<double> phi;
+    for (int j = 1; j <= p.beads; ++j) phi.push_back(cb::extension(sim.state(), j));
+    return phi;
+  };
+  const std::vector<double> ref = phi_at(0.0025);
+  auto error = [&](double dt) {
+    const std::vector<double> phi = phi_at(dt);
+    double e = 0.0;
+    for (std::size_t j = 0; j < phi.size(); ++j) e = std::max(e, std::abs(phi[j] - ref[j]));
+    return e;
+  };
+  const double e1 = error(0.04), e2 = error(0.08), e4 = error(0.16);
+  INFO("errors " << e1 << " " << e2 << " " << e4);
+  CHECK(e2 / e1 == Approx(16.0).margin(1.5));
+  CHECK(e4 / e2 == Approx(16.0).margin(1.5));
+  CHECK(e4 > 1e-8);
+}
+
 TEST_CASE("fput: the energy books balance with the anharmonic potential", "[fput]") {
   // Without friction, E = W - B to RK4's accuracy; with the harmonic potential instead the
   // books miss by the anharmonic energy (checked below, so the test sees the potential).
@@ -216,9 +244,17 @@ TEST_CASE("fput: RK4 against scipy's DOP853 at 1e-7", "[fput]") {
   std::ifstream in(std::string(CHAINBREAK_TEST_DATA) + "/fput_dop853_reference.json");
   REQUIRE(in);
   const nlohmann::json ref = nlohmann::json::parse(in);
-  REQUIRE(ref["cases"].size() == 2);
+  // Two chains on a table and one hanging (issue #24 with #22: gravity, in psi with its weight).
+  REQUIRE(ref["cases"].size() == 3);
   for (const auto& c : ref["cases"]) {
-    const cb::ChainParams p = fput_chain(c["beads"], c["alpha"], c["beta_fput"], c["gamma"]);
+    cb::ChainParams p = fput_chain(c["beads"], c["alpha"], c["beta_fput"], c["gamma"]);
+    p.gravity = c.value("gravity", 0.0);
+    if (p.hanging()) {
+      // The equilibrium it starts in: fput_extension's Newton against numpy's roots of the cubic.
+      const std::vector<double> eq = p.equilibrium_extensions();
+      for (int j = 1; j <= p.beads; ++j)
+        CHECK(eq[j - 1] == Approx(c["phi_eq"][j - 1].get<double>()).epsilon(1e-13));
+    }
     cb::Integrator sim(p, cb::make_forcing(ramp(c["ramp"])), {0.005});
     const auto& times = c["times"];
     double worst = 0.0, largest = 0.0;
@@ -436,10 +472,12 @@ TEST_CASE("a hanging chain of softening springs too heavy for them is refused wi
   CHECK_THAT(e, Contains("largest at phi = 2.5, where it is 1.25"));
   CHECK_THAT(e, Contains("use gravity < 0.041666"));
   // Light enough, with a threshold below the flat (T(2) = 1.2 holds 30 beads of 0.03): the
-  // equilibrium exists, and the scene is refused only for the motion about it.
+  // equilibrium exists, and the scene runs (it was refused before the hanging anharmonic chain
+  // ran in psi with its weight).
   const std::string light =
       with("gamma = 0.0", "gamma = 0.0\ngravity = 0.03\nfput_alpha = -0.2\nthreshold = 2.0");
-  const std::string e2 = error_of(light);
-  CHECK_THAT(e2, !Contains("no hanging equilibrium"));
-  CHECK_THAT(e2, Contains("the hanging equilibrium is computed, but the motion about it is not"));
+  CHECK(error_of(light) == "(no error)");
+  const cb::SceneDesc s = cb::parse_scene(light, "t.toml", {});
+  CHECK(s.chain.hanging());
+  CHECK(s.chain.anharmonic());
 }

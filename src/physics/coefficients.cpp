@@ -27,9 +27,16 @@ ChainCoefficients chain_coefficients(const ChainParams& params, bool per_bead_al
   c.stiffness.assign(size, 0.0);
   c.upper.assign(size, kInf);
   c.lower.assign(size, -kInf);
+  // A hanging chain of anharmonic springs runs in psi with its weight (coefficients.h): its
+  // bounds are unshifted and it has no broken-spring loads. (The anharmonic_always option on a
+  // linear hanging chain keeps the equilibrium frame: a = b = 0 are linear springs.)
+  const bool about_equilibrium = p.hanging() && !p.anharmonic();
+  if (p.hanging() && p.anharmonic()) c.weight = p.gravity;
   // Zeros for a chain without weight: phi_c,j - 0 == phi_c,j, its bounds unchanged.
-  const std::vector<double> eq = p.equilibrium_extensions();
-  if (p.hanging()) c.tension.assign(size, 0.0);
+  const std::vector<double> eq = about_equilibrium
+                                     ? p.equilibrium_extensions()
+                                     : std::vector<double>(static_cast<std::size_t>(n), 0.0);
+  if (about_equilibrium) c.tension.assign(size, 0.0);
   for (int j = 1; j <= n; ++j) {
     const double m = p.mass_of(j);
     c.mass[j - 1] = m;
@@ -38,7 +45,7 @@ ChainCoefficients chain_coefficients(const ChainParams& params, bool per_bead_al
     const double phi_c = p.threshold_of(j);
     c.upper[j - 1] = phi_c - eq[j - 1];
     c.lower[j - 1] = lower_bound_of(phi_c, c.stretch_only) - eq[j - 1];
-    if (p.hanging()) c.tension[j - 1] = c.stiffness[j - 1] * eq[j - 1];
+    if (about_equilibrium) c.tension[j - 1] = c.stiffness[j - 1] * eq[j - 1];
   }
   return c;
 }

@@ -12,8 +12,8 @@
 //
 // Each spring has an upper and a lower bound: it breaks when phi_j >= upper_j or phi_j <=
 // lower_j. The paper's |phi_j| >= phi_c,j is (phi_c,j, -phi_c,j); break_on = "stretch" is
-// (phi_c,j, -inf). A static load (gravity, issue #22) will shift both bounds of each spring by
-// its equilibrium extension, with no change to the kernels.
+// (phi_c,j, -inf). A static load (gravity, issue #22) shifts both bounds of each spring by
+// its equilibrium extension, with no change to the kernels (linear springs only; see `weight`).
 #pragma once
 
 #include <limits>
@@ -60,6 +60,24 @@ struct ChainCoefficients {
   // other kernels run only where no spring is broken. Empty unless the chain hangs; spring j at
   // index j - 1, zeros past N.
   std::vector<double> tension;  // K_j phi_eq,j
+  // A hanging chain of anharmonic springs (issue #24 with #22) is NOT integrated about its
+  // equilibrium: T(phi_eq + w) - T(phi_eq) is no longer the tension of w, so the weight does not
+  // cancel and a broken spring's leftover load is not a constant. Two designs were weighed:
+  //   (A) per-spring coefficients about the equilibrium, K'_j = K_j T'(phi_eq,j), a'_j = a +
+  //       3 b phi_eq,j, b'_j = b: the Anharmonic policy would read a and b per spring (left and
+  //       right separately), so ChainCoefficients, BeadCoef and every kernel family (tile,
+  //       wavefront, window, lanes) would load two more arrays, and the broken-spring loads
+  //       would stay;
+  //   (B) the chain in psi itself, starting at psi_eq at rest, with its weight as a force: m_j G
+  //       is the acceleration G at every bead, one scalar like a and b, added by the Weighted
+  //       policy (stencil.inc) in the tiled kernel only.
+  // (B) is taken: no arrays, one policy of two lines, one more instantiation of the tiled kernel;
+  // the bounds are the springs' own (no shift), a broken spring leaves nothing behind (its beads
+  // simply lose it, and a loose piece falls at G), and the state is already psi. The Integrator
+  // sends such a chain to the tiled kernel on every instruction set (no wavefront, no window
+  // kernel). Harmonic hanging chains keep the equilibrium frame and its bits.
+  // weight: G for such a chain (then per_bead, anharmonic, tension empty), else 0.
+  double weight = 0.0;
 
   double mass_of(int bead) const { return per_bead ? mass[bead - 1] : 1.0; }                // 1..N
   double stiffness_of(int spring) const { return per_bead ? stiffness[spring - 1] : 1.0; }  // 1..N
@@ -69,7 +87,10 @@ struct ChainCoefficients {
     if (per_bead) return lower[spring - 1];
     return lower_bound_of(threshold, stretch_only);
   }
+  // Integrated about the hanging equilibrium (a harmonic hanging chain): u = psi - psi_eq.
   bool hanging() const { return !tension.empty(); }
+  // A hanging anharmonic chain, integrated in psi with its weight (the Weighted policy).
+  bool weighted() const { return weight > 0.0; }
   // The constant load on bead i (0-based) from the broken springs among `broken` (sorted, 1..N)
   // at its two ends; 0 unless the chain hangs.
   double broken_load(int bead, const std::vector<int>& broken) const;

@@ -71,7 +71,13 @@ double hanging_equilibrium_energy(const ChainParams& params) {
   double elastic = 0.0, weight = 0.0, psi = 0.0;
   for (int j = 1; j <= params.beads; ++j) {
     psi += phi[j - 1];
-    elastic += 0.5 * params.stiffness_of(j) * phi[j - 1] * phi[j - 1];
+    // Anharmonic springs (issue #24): K_j (phi^2/2 + a phi^3/3 + b phi^4/4), as energy() counts
+    // them; linear ones keep their bits.
+    if (params.anharmonic())
+      elastic +=
+          params.stiffness_of(j) * fput_potential(phi[j - 1], params.fput_alpha, params.fput_beta);
+    else
+      elastic += 0.5 * params.stiffness_of(j) * phi[j - 1] * phi[j - 1];
     weight -= params.gravity * params.mass_of(j) * psi;
   }
   return elastic + weight;

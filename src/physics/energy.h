@@ -23,7 +23,8 @@ EnergyParts energy(const ChainState& state);
 // A hanging chain's (params.gravity > 0) adds the weight's potential and counts from the
 // hanging equilibrium (EnergyParts); `state` then holds psi (Integrator::state()), not u.
 EnergyParts energy(const ChainState& state, const ChainParams& params);
-// The energy of the hanging equilibrium: sum_j K_j phi_eq,j^2 / 2 - G sum_j m_j psi_eq,j.
+// The energy of the hanging equilibrium: sum_j K_j phi_eq,j^2 / 2 - G sum_j m_j psi_eq,j (the
+// anharmonic potential K_j (phi^2/2 + a phi^3/3 + b phi^4/4) for FPUT springs).
 double hanging_equilibrium_energy(const ChainParams& params);
 
 // Eq. (energy): energy per particle with the paper's 1/N scaling of psi, i.e. total/N^3.

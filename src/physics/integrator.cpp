@@ -134,14 +134,21 @@ Integrator::Integrator(const ChainParams& params, Forcing forcing, IntegratorOpt
   state_.vel = detail::zero_array(params_.beads);
   const int block = options_.block_steps.value_or(
       active_block_steps().value_or(params_.beads >= kBlockMinBeads ? kDefaultBlockSteps : 1));
-  impl_ = std::make_unique<Impl>(params_.beads, options_.threads,
-                                 options_.simd.value_or(active_simd()), options_.tiled_only, block);
+  // A hanging anharmonic chain runs on the tiled kernel only, on every instruction set: the
+  // Weighted policy (coefficients.h) is instantiated there and nowhere else.
+  impl_ =
+      std::make_unique<Impl>(params_.beads, options_.threads, options_.simd.value_or(active_simd()),
+                             options_.tiled_only || coef_.weighted(), block);
   impl_->breakpoints_sorted =
       std::is_sorted(forcing_.breakpoints.begin(), forcing_.breakpoints.end());
-  if (params_.hanging()) {
+  if (coef_.hanging()) {
     // At rest in the hanging equilibrium: u = 0 (state_ holds u, see state()).
     eq_psi_ = params_.equilibrium_positions();
     eq_phi_ = params_.equilibrium_extensions();
+  } else if (coef_.weighted()) {
+    // At rest in the hanging equilibrium, in psi itself (into zero_array's pages).
+    const std::vector<double> eq = params_.equilibrium_positions();
+    std::copy(eq.begin(), eq.end(), state_.psi.begin());
   }
 }
 
@@ -585,7 +592,7 @@ void Integrator::break_spring(int spring, double tau) {
   }
   // The spring's elastic energy K_j phi_j^2 / 2 leaves with it ((0.5 1) phi == 0.5 phi).
   double phi = extension(state_, spring);
-  if (params_.hanging()) phi += eq_phi_[spring - 1];  // state_ holds u = psi - psi_eq
+  if (coef_.hanging()) phi += eq_phi_[spring - 1];  // state_ holds u = psi - psi_eq
   if (coef_.anharmonic)  // K_j (phi^2/2 + a phi^3/3 + b phi^4/4), issue #24
     state_.break_loss +=
         coef_.stiffness_of(spring) * fput_potential(phi, coef_.fput_alpha, coef_.fput_beta);
@@ -710,10 +717,16 @@ double rk4_stability_limit(const ChainParams& params) {
     // extension a spring can reach before it breaks, K_j T'(phi) with |phi| <= phi_c,j (the
     // largest T' = 1 + 2 a phi + 3 b phi^2 there; issue #24). An unbreakable spring has no such
     // bound and is linearised at phi = 0.
+    // A hanging chain's springs also sit at phi_eq,j, which may be stiffer than that (an
+    // unbreakable chain, or one whose threshold lies close to it).
+    const std::vector<double> eq = p.equilibrium_extensions();
     std::vector<double> k(static_cast<std::size_t>(p.beads));
-    for (int j = 1; j <= p.beads; ++j)
-      k[j - 1] =
-          p.stiffness_of(j) * fput_stiffest_slope(p.threshold_of(j), p.fput_alpha, p.fput_beta);
+    for (int j = 1; j <= p.beads; ++j) {
+      double slope = fput_stiffest_slope(p.threshold_of(j), p.fput_alpha, p.fput_beta);
+      if (std::isfinite(eq[j - 1]))
+        slope = std::max(slope, fput_slope(eq[j - 1], p.fput_alpha, p.fput_beta));
+      k[j - 1] = p.stiffness_of(j) * slope;
+    }
     p.stiffness = std::move(k);
     p.fput_alpha = p.fput_beta = 0.0;
     return rk4_stability_limit_for(largest_eigenvalue(p) * (1.0 + 1e-12), p.gamma);

@@ -4,6 +4,9 @@
 // The chain's constants are built once per Integrator (coefficients.h) and shared read-only by
 // every worker and block; the paper's chain takes the Uniform coefficient policy (its bits of
 // before), any other the PerBead one, on every kernel path (stencil.inc).
+// The exception is a hanging chain of anharmonic springs (issue #24 with #22), integrated in psi
+// with its weight by the Weighted policy, which only the tiled kernel has: such a chain takes the
+// tiled kernel on every instruction set, as tiled_only would (coefficients.h says why).
 //
 // Design note: the four stages are fused and evaluated tile by tile (a few thousand
 // beads with a 4-bead halo) so that one step streams psi and vel through memory once
@@ -91,20 +94,22 @@ class Integrator {
   // (physics/run_loop.h) with a step count as the only stop rule.
   bool advance_to(std::int64_t target_step);
 
-  // The chain's state. A hanging chain (ChainParams::hanging) is integrated about its
-  // equilibrium, u = psi - psi_eq (coefficients.h); this reports psi = u + psi_eq, made when the
-  // state has moved since the last call, so a reference to it is current only until the next
-  // step.
-  const ChainState& state() const { return params_.hanging() ? hanging_state() : state_; }
+  // The chain's state. A hanging chain of linear springs (ChainParams::hanging) is integrated
+  // about its equilibrium, u = psi - psi_eq (coefficients.h); this reports psi = u + psi_eq, made
+  // when the state has moved since the last call, so a reference to it is current only until the
+  // next step. A hanging chain of anharmonic springs is integrated in psi (the tiled kernel only).
+  const ChainState& state() const { return coef_.hanging() ? hanging_state() : state_; }
   const ChainParams& params() const { return params_; }
   // The chain's constants as the kernels read them, built once (coefficients.h).
   const ChainCoefficients& coefficients() const { return coef_; }
   double dt() const { return options_.dt; }
   // Whether steps take the one-chain kernel (rk4_chain.h) while no spring is broken: one
-  // worker, N < 20000, AVX2 or AVX-512, not tiled_only. Same bits either way.
+  // worker, N < 20000, AVX2 or AVX-512, not tiled_only, not a hanging anharmonic chain. Same bits
+  // either way.
   bool small_chain_kernel() const;
   // Whether temporal blocks take the window kernel (rk4_chain.h, rk4_window) where no broken
-  // spring is near: AVX2 or AVX-512, not tiled_only. Same bits either way.
+  // spring is near: AVX2 or AVX-512, not tiled_only, not a hanging anharmonic chain. Same bits
+  // either way.
   bool block_window_kernel() const;
   SimdPath simd() const;     // the instruction set the kernel runs on
   int block_steps() const;   // steps per temporal block; 1 when blocking is off
@@ -139,8 +144,8 @@ class Integrator {
   std::unique_ptr<Impl> impl_;
   CrossingWatch watch_;  // watch_crossings(); empty: springs break
 
-  // A hanging chain: psi_eq, phi_eq (index j - 1), and the last state() reported (psi, not u)
-  // with the step, tau and break count it was made at.
+  // A hanging chain of linear springs: psi_eq, phi_eq (index j - 1), and the last state()
+  // reported (psi, not u) with the step, tau and break count it was made at.
   std::vector<double> eq_psi_, eq_phi_;
   mutable ChainState shown_;
   mutable std::int64_t shown_step_ = -1;

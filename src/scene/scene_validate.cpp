@@ -192,16 +192,10 @@ void Checker::chain() const {
     fail("chain.pull_string",
          "chain.pull_string = true needs chain.threshold (the string breaks when f reaches "
          "it); add e.g. threshold = 1.0 to [chain], or set pull_string = false");
+  // A hanging chain of anharmonic springs runs (in psi with its weight, physics/coefficients.h)
+  // where its equilibrium exists, which gravity() checks.
   gravity();
   anharmonic();
-  // The hanging equilibrium of anharmonic springs is solved (gravity() checks that it exists),
-  // but the kernels integrate a hanging chain about it with the linear stencil's shift, which
-  // holds for linear springs only: the pair is refused rather than run wrong.
-  if (scene_.chain.hanging() && scene_.chain.anharmonic() && !failed({"chain.gravity"}))
-    fail("chain.gravity",
-         "chain.gravity with anharmonic springs (chain.fput_alpha, chain.fput_beta) is not "
-         "supported yet: the hanging equilibrium is computed, but the motion about it is not; "
-         "use gravity = 0, or fput_alpha = fput_beta = 0");
 }
 
 // chain.gravity = G >= 0, and light enough that the hanging equilibrium breaks no spring:
