@@ -133,7 +133,10 @@ const std::vector<std::string> kHandWritten = {
     "1e400", "0x10", "1 2", "t..5", ".", ".e5", "1=", "=1", "!1", "1!", "1!=", "<1", "1<",
     "1<>2", "1=<2", "1=>2", "1 = = 1", "1&&", "||1", "1^^2", "2^", "^2", "t^", "sin)",
     "(", ")", "((1)", "(1))", "sum(1;2)", "min(1 2)", "max(,)", "abs(-)", "1+2)*(3",
-    "t =", "= t", "é", "t²", "1,,2", "sum(1,,2)"};
+    "t =", "= t", "é", "t²", "1,,2", "sum(1,,2)",
+    // control characters: 1 to 13 are skipped as blanks, 14 to 31 refused (found by
+    // fuzz_expression)
+    "1+\x01" "2", "t\r", "\vt", "t\x0e", "\x17t", "1+\x1f" "2", "t\x7f"};
 
 // A seeded generator of its own (splitmix64): the corpus is the same on every machine.
 struct Random {

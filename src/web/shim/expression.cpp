@@ -147,7 +147,8 @@ bool name_char(char c) {
 }
 bool digit(char c) { return c >= '0' && c <= '9'; }
 
-// muParser skips every character from 1 to 32 (spaces, tabs, newlines, control characters).
+// muParser skips every character from 1 to 32 (spaces, tabs, newlines; parse() has refused
+// those from 14 to 31 already).
 bool blank(char c) {
   const auto u = static_cast<unsigned char>(c);
   return u >= 1 && u <= 32;
@@ -167,6 +168,14 @@ class Parser {
   // The whole text: items separated by commas, the value is the last one's. Returns the
   // deepest the evaluation stack gets.
   int parse() {
+    // muParser refuses characters 14 to 31 anywhere (and skips 1 to 13 as it skips spaces).
+    for (std::size_t i = 0; i < text_.size(); ++i) {
+      const auto u = static_cast<unsigned char>(text_[i]);
+      if (u >= 14 && u < 32)
+        fail("a control character (code " + std::to_string(u) + ") at position " +
+                 std::to_string(i) + "; an expression is printable text",
+             i, text_.substr(i, 1));
+    }
     skip_blanks();
     if (at_end()) fail("the expression is empty; write one in t, e.g. \"0.02*t\"", pos_, "");
     assignment();
