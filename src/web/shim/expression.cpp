@@ -23,34 +23,78 @@ using Instruction = Expression::Instruction;
 // the inverse hyperbolic functions and log2 by their logarithm formulas, rint as floor(v + 0.5),
 // abs keeping -0, min and max in std::min / std::max's order (what a NaN argument gives).
 
-double f_sin(double v) { return std::sin(v); }
-double f_cos(double v) { return std::cos(v); }
-double f_tan(double v) { return std::tan(v); }
-double f_asin(double v) { return std::asin(v); }
-double f_acos(double v) { return std::acos(v); }
-double f_atan(double v) { return std::atan(v); }
-double f_atan2(double y, double x) { return std::atan2(y, x); }
-double f_sinh(double v) { return std::sinh(v); }
-double f_cosh(double v) { return std::cosh(v); }
-double f_tanh(double v) { return std::tanh(v); }
-double f_asinh(double v) { return std::log(v + std::sqrt(v * v + 1)); }
-double f_acosh(double v) { return std::log(v + std::sqrt(v * v - 1)); }
-double f_atanh(double v) { return 0.5 * std::log((1 + v) / (1 - v)); }
-double f_log2(double v) { return std::log(v) / std::log(2.0); }
-double f_log10(double v) { return std::log10(v); }
-double f_ln(double v) { return std::log(v); }
-double f_exp(double v) { return std::exp(v); }
-double f_sqrt(double v) { return std::sqrt(v); }
-double f_sign(double v) { return v < 0 ? -1.0 : v > 0 ? 1.0 : 0.0; }
-double f_rint(double v) { return std::floor(v + 0.5); }
-double f_abs(double v) { return v >= 0 ? v : -v; }
+double f_sin(double v) {
+  return std::sin(v);
+}
+double f_cos(double v) {
+  return std::cos(v);
+}
+double f_tan(double v) {
+  return std::tan(v);
+}
+double f_asin(double v) {
+  return std::asin(v);
+}
+double f_acos(double v) {
+  return std::acos(v);
+}
+double f_atan(double v) {
+  return std::atan(v);
+}
+double f_atan2(double y, double x) {
+  return std::atan2(y, x);
+}
+double f_sinh(double v) {
+  return std::sinh(v);
+}
+double f_cosh(double v) {
+  return std::cosh(v);
+}
+double f_tanh(double v) {
+  return std::tanh(v);
+}
+double f_asinh(double v) {
+  return std::log(v + std::sqrt(v * v + 1));
+}
+double f_acosh(double v) {
+  return std::log(v + std::sqrt(v * v - 1));
+}
+double f_atanh(double v) {
+  return 0.5 * std::log((1 + v) / (1 - v));
+}
+double f_log2(double v) {
+  return std::log(v) / std::log(2.0);
+}
+double f_log10(double v) {
+  return std::log10(v);
+}
+double f_ln(double v) {
+  return std::log(v);
+}
+double f_exp(double v) {
+  return std::exp(v);
+}
+double f_sqrt(double v) {
+  return std::sqrt(v);
+}
+double f_sign(double v) {
+  return v < 0 ? -1.0 : v > 0 ? 1.0 : 0.0;
+}
+double f_rint(double v) {
+  return std::floor(v + 0.5);
+}
+double f_abs(double v) {
+  return v >= 0 ? v : -v;
+}
 
 double f_sum(const double* a, int n) {
   double s = 0;
   for (int i = 0; i < n; ++i) s += a[i];
   return s;
 }
-double f_avg(const double* a, int n) { return f_sum(a, n) / static_cast<double>(n); }
+double f_avg(const double* a, int n) {
+  return f_sum(a, n) / static_cast<double>(n);
+}
 double f_min(const double* a, int n) {
   double m = a[0];
   for (int i = 0; i < n; ++i) m = std::min(m, a[i]);
@@ -71,19 +115,19 @@ struct Function {
 };
 
 constexpr Function kFunctions[] = {
-    {"sin", 1, f_sin, nullptr, nullptr},       {"cos", 1, f_cos, nullptr, nullptr},
-    {"tan", 1, f_tan, nullptr, nullptr},       {"asin", 1, f_asin, nullptr, nullptr},
-    {"acos", 1, f_acos, nullptr, nullptr},     {"atan", 1, f_atan, nullptr, nullptr},
-    {"atan2", 2, nullptr, f_atan2, nullptr},   {"sinh", 1, f_sinh, nullptr, nullptr},
-    {"cosh", 1, f_cosh, nullptr, nullptr},     {"tanh", 1, f_tanh, nullptr, nullptr},
-    {"asinh", 1, f_asinh, nullptr, nullptr},   {"acosh", 1, f_acosh, nullptr, nullptr},
-    {"atanh", 1, f_atanh, nullptr, nullptr},   {"log2", 1, f_log2, nullptr, nullptr},
-    {"log10", 1, f_log10, nullptr, nullptr},   {"log", 1, f_ln, nullptr, nullptr},
-    {"ln", 1, f_ln, nullptr, nullptr},         {"exp", 1, f_exp, nullptr, nullptr},
-    {"sqrt", 1, f_sqrt, nullptr, nullptr},     {"sign", 1, f_sign, nullptr, nullptr},
-    {"rint", 1, f_rint, nullptr, nullptr},     {"abs", 1, f_abs, nullptr, nullptr},
-    {"sum", -1, nullptr, nullptr, f_sum},      {"avg", -1, nullptr, nullptr, f_avg},
-    {"min", -1, nullptr, nullptr, f_min},      {"max", -1, nullptr, nullptr, f_max},
+    {"sin", 1, f_sin, nullptr, nullptr},     {"cos", 1, f_cos, nullptr, nullptr},
+    {"tan", 1, f_tan, nullptr, nullptr},     {"asin", 1, f_asin, nullptr, nullptr},
+    {"acos", 1, f_acos, nullptr, nullptr},   {"atan", 1, f_atan, nullptr, nullptr},
+    {"atan2", 2, nullptr, f_atan2, nullptr}, {"sinh", 1, f_sinh, nullptr, nullptr},
+    {"cosh", 1, f_cosh, nullptr, nullptr},   {"tanh", 1, f_tanh, nullptr, nullptr},
+    {"asinh", 1, f_asinh, nullptr, nullptr}, {"acosh", 1, f_acosh, nullptr, nullptr},
+    {"atanh", 1, f_atanh, nullptr, nullptr}, {"log2", 1, f_log2, nullptr, nullptr},
+    {"log10", 1, f_log10, nullptr, nullptr}, {"log", 1, f_ln, nullptr, nullptr},
+    {"ln", 1, f_ln, nullptr, nullptr},       {"exp", 1, f_exp, nullptr, nullptr},
+    {"sqrt", 1, f_sqrt, nullptr, nullptr},   {"sign", 1, f_sign, nullptr, nullptr},
+    {"rint", 1, f_rint, nullptr, nullptr},   {"abs", 1, f_abs, nullptr, nullptr},
+    {"sum", -1, nullptr, nullptr, f_sum},    {"avg", -1, nullptr, nullptr, f_avg},
+    {"min", -1, nullptr, nullptr, f_min},    {"max", -1, nullptr, nullptr, f_max},
 };
 
 const Function* find_function(const std::string& name) {
@@ -145,7 +189,9 @@ double apply_binary(Op op, double x, double y) {
 bool name_char(char c) {
   return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
 }
-bool digit(char c) { return c >= '0' && c <= '9'; }
+bool digit(char c) {
+  return c >= '0' && c <= '9';
+}
 
 // muParser skips every character from 1 to 32 (spaces, tabs, newlines; parse() has refused
 // those from 14 to 31 already).
@@ -288,9 +334,9 @@ class Parser {
     assignment();
     if (peek_symbol() != ":") {
       if (at_end())
-        fail("the \"?\" at position " + std::to_string(question) +
-                 " has no \":\" (write c ? a : b)",
-             question, "?");
+        fail(
+            "the \"?\" at position " + std::to_string(question) + " has no \":\" (write c ? a : b)",
+            question, "?");
       unexpected();
     }
     take(1);
@@ -442,8 +488,8 @@ class Parser {
       return;
     }
     if (at_end())
-      fail("the parenthesis opened at position " + std::to_string(open) + " is never closed",
-           open, "(");
+      fail("the parenthesis opened at position " + std::to_string(open) + " is never closed", open,
+           "(");
     unexpected();
   }
 
@@ -527,8 +573,8 @@ class Parser {
     std::string known;
     for (const auto& [n, p] : variables_) known += " " + n;
     for (const auto& [n, v] : constants_) known += " " + n;
-    fail("unknown name \"" + id + "\" at position " + std::to_string(start) +
-             " (the names are" + known + " and the functions " + function_names() + ")",
+    fail("unknown name \"" + id + "\" at position " + std::to_string(start) + " (the names are" +
+             known + " and the functions " + function_names() + ")",
          start, id);
   }
 
@@ -547,7 +593,7 @@ class Parser {
         take(1);
       }
     }
-    const std::string arguments = f.arity < 0 ? "one or more arguments"
+    const std::string arguments = f.arity < 0    ? "one or more arguments"
                                   : f.arity == 1 ? "one argument"
                                                  : std::to_string(f.arity) + " arguments";
     if (count < std::max(f.arity, 1) || (f.arity > 0 && count > f.arity)) {
