@@ -136,7 +136,7 @@
       "chain.beads": s.beads, "chain.gamma": s.gamma,
       "chain.threshold": Number.isFinite(s.threshold) ? s.threshold : "",
       "chain.break_on": s.break_on, "drive.type": s.drive, "drive.beta": s.beta,
-      "drive.amplitude": s.amplitude, "drive.period": s.period,
+      "drive.amplitude": s.amplitude, "drive.period": s.period, "drive.expr": s.expr,
     };
     for (const el of document.querySelectorAll("[data-key]")) {
       const key = el.dataset.key;
@@ -310,6 +310,10 @@
     });
     for (const el of document.querySelectorAll("[data-key]")) {
       el.addEventListener("change", () => {
+        // An expression drive needs its expression: a scene of another kind gets a slow ramp's
+        // to start from, which the field then shows (a failed set changes nothing).
+        if (el.dataset.key === "drive.type" && el.value === "expr" && !page.scene().expr)
+          page.set("drive.expr", "0.02*t");
         const error = page.set(el.dataset.key, el.value === "" ? "nan" : el.value);
         const out = $(el.id + "-error");
         if (error) {

@@ -146,6 +146,7 @@ class Page {
     o.set("beta", s.drive.beta);
     o.set("amplitude", s.drive.amplitude);
     o.set("period", s.drive.period);
+    o.set("expr", s.drive.expr);
     o.set("t0", s.drive.t0);
     o.set("dt", s.integrator.dt);
     o.set("t_end", s.integrator.t_end);

@@ -1,0 +1,70 @@
+// The page's expression evaluator (src/web/shim/expression.h) against Debian's muParser, the
+// program's: a differential harness. Both compile the text with the drive's names (t, pi);
+// they must accept and refuse alike, and where both accept give the same double at a few t
+// (natively both call glibc's functions in the same order; tests/test_expression.cpp is the
+// fixed corpus). muParser is not instrumented; the evaluator is, so coverage steers by it.
+#include <muParser.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "fuzz_support.h"
+#include "web/shim/expression.h"
+
+namespace {
+
+// Texts where muParser, once a comma has been read, lets through what it cannot evaluate and
+// gives what its stack holds: a sign at the very end ("1,-" is -1, "1,2,-" is 0, "1,t*-" is
+// -t) or a '?' right after a comma ("1,?2:3" is 0). Its defect; the evaluator refuses both,
+// the one place where they part on purpose.
+bool muparser_defect(const std::string& text) {
+  const auto blank = [](char c) { return static_cast<unsigned char>(c) <= 32; };
+  const std::size_t comma = text.find(',');
+  if (comma == std::string::npos) return false;
+  std::size_t end = text.size();
+  while (end > 0 && blank(text[end - 1])) --end;
+  if (end > comma && (text[end - 1] == '-' || text[end - 1] == '+')) return true;
+  for (std::size_t i = comma; i < text.size(); ++i) {
+    if (text[i] != ',') continue;
+    std::size_t j = i + 1;
+    while (j < text.size() && blank(text[j])) ++j;
+    if (j < text.size() && text[j] == '?') return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string text = cb::fuzz::text_of(data, size);
+  if (text.find('\0') != std::string::npos) return 0;  // muParser reads a C string
+  if (muparser_defect(text)) return 0;
+  double t_ours = 0.0, t_mu = 0.0;
+  cb::expression::Expression ours;
+  ours.define_variable("t", &t_ours);
+  ours.define_constant("pi", std::numbers::pi);
+  bool ours_accepts = true;
+  try {
+    ours.compile(text);
+  } catch (const cb::expression::ExpressionError&) {
+    ours_accepts = false;
+  }
+  mu::Parser mu;
+  bool mu_accepts = true;
+  try {
+    mu.DefineVar("t", &t_mu);
+    mu.DefineConst("pi", std::numbers::pi);
+    mu.SetExpr(text);
+    mu.Eval();
+  } catch (const mu::Parser::exception_type&) {
+    mu_accepts = false;
+  }
+  FUZZ_CHECK(ours_accepts == mu_accepts);
+  if (!ours_accepts || !mu_accepts) return 0;
+  for (const double t : {0.0, 0.5, 1.5, -2.0, 37.25}) {
+    t_ours = t_mu = t;
+    const double a = ours.evaluate(), b = mu.Eval();
+    FUZZ_CHECK((std::isnan(a) && std::isnan(b)) || a == b);
+  }
+  return 0;
+}
