@@ -615,24 +615,6 @@ bool spring_intact(const ChainState& s, int spring) {
 }
 
 namespace {
-double rk4_stability_limit_uncached(int beads, double gamma);
-}  // namespace
-
-double rk4_stability_limit(int beads, double gamma) {
-  // Scene validation asks for this once per value of a sweep, nearly always for the same chain,
-  // and the bisection below costs ~0.1 ms: two thirds of loading a sweep's 420 scenes. The last
-  // answer is kept per thread (same bits in, same answer out).
-  thread_local int last_beads = -1;
-  thread_local std::uint64_t last_gamma = 0;
-  thread_local double last_limit = 0.0;
-  if (beads == last_beads && std::bit_cast<std::uint64_t>(gamma) == last_gamma) return last_limit;
-  last_limit = rk4_stability_limit_uncached(beads, gamma);
-  last_beads = beads;
-  last_gamma = std::bit_cast<std::uint64_t>(gamma);
-  return last_limit;
-}
-
-namespace {
 
 // The largest eigenvalue of M^-1 K for the chain (K_{N+1} = 0), which has the eigenvalues of the
 // symmetric tridiagonal A = M^-1/2 K M^-1/2: a_j = (K_j + K_{j+1}) / m_j on the diagonal,
@@ -670,19 +652,18 @@ double largest_eigenvalue(const ChainParams& p) {
   return hi;
 }
 
-// The largest dt for which |R(h mu)| <= 1 for every mu = -gamma +- sqrt(gamma^2 - Omega^2) with
-// Omega^2 in [0, lambda_max]: every mode of any chain whose highest squared frequency is at
-// most lambda_max (friction is proportional to mass, so each mode has the same gamma).
-// Sampling the whole range, not the chain's own frequencies, makes it safe without knowing
-// them; the highest frequency is sampled exactly.
-double rk4_stability_limit_for(double lambda_max, double gamma) {
-  const double omega_max = std::sqrt(lambda_max);
+// The largest h for which classical RK4 is stable on modes of friction gamma and the frequencies
+// omega(s), s = 0 .. samples - 1: |R(h mu)| <= 1 (to 1e-12) for mu = -gamma +- sqrt(gamma^2 -
+// omega^2), with RK4's amplification factor R(z) = 1 + z + z^2/2 + z^3/6 + z^4/24. Found by
+// doubling h from 4 while stable (up to 1e6), then 60 bisections: to about 1e-6 relative of the
+// sampled frequencies' limit. The one test of both limits below (the uniform chain's own modes,
+// or a range that covers any chain's).
+template <class Omega>
+double rk4_stable_step(int samples, Omega omega, double gamma) {
   auto stable = [&](double h) {
-    constexpr int kSamples = 512;
-    for (int s = 1; s <= kSamples; ++s) {
-      const double omega = omega_max * s / kSamples;
-      const std::complex<double> root =
-          std::sqrt(std::complex<double>(gamma * gamma - omega * omega, 0.0));
+    for (int s = 0; s < samples; ++s) {
+      const double w = omega(s);
+      const std::complex<double> root = std::sqrt(std::complex<double>(gamma * gamma - w * w, 0.0));
       for (const auto mu : {-gamma + root, -gamma - root}) {
         const std::complex<double> z = h * mu;
         const std::complex<double> r = 1.0 + z * (1.0 + z * (0.5 + z * (1.0 / 6.0 + z / 24.0)));
@@ -700,7 +681,50 @@ double rk4_stability_limit_for(double lambda_max, double gamma) {
   return lo;
 }
 
+// The largest dt for which |R(h mu)| <= 1 for every mu = -gamma +- sqrt(gamma^2 - Omega^2) with
+// Omega^2 in [0, lambda_max]: every mode of any chain whose highest squared frequency is at
+// most lambda_max (friction is proportional to mass, so each mode has the same gamma).
+// Sampling the whole range, not the chain's own frequencies, makes it safe without knowing
+// them; the highest frequency is sampled exactly.
+double rk4_stability_limit_for(double lambda_max, double gamma) {
+  const double omega_max = std::sqrt(lambda_max);
+  constexpr int kSamples = 512;
+  return rk4_stable_step(
+      kSamples, [&](int s) { return omega_max * (s + 1) / kSamples; }, gamma);
+}
+
+double rk4_stability_limit_uncached(int beads, double gamma) {
+  // The chain's modes have Omega = 2 sin(k/2), k = (n + 1/2) pi / (N + 1/2), which fill
+  // (Omega_0, Omega_{N-1}): all of them up to 512 beads, else 512 spread over that range from
+  // the first to the last.
+  const int samples = std::min(beads, 512);
+  return rk4_stable_step(
+      samples,
+      [&](int s) {
+        const int n = samples == beads
+                          ? s
+                          : static_cast<int>((static_cast<long>(beads - 1) * s) / (samples - 1));
+        const double k = (n + 0.5) * M_PI / (beads + 0.5);
+        return 2.0 * std::sin(0.5 * k);
+      },
+      gamma);
+}
+
 }  // namespace
+
+double rk4_stability_limit(int beads, double gamma) {
+  // Scene validation asks for this once per value of a sweep, nearly always for the same chain,
+  // and the bisection below costs ~0.1 ms: two thirds of loading a sweep's 420 scenes. The last
+  // answer is kept per thread (same bits in, same answer out).
+  thread_local int last_beads = -1;
+  thread_local std::uint64_t last_gamma = 0;
+  thread_local double last_limit = 0.0;
+  if (beads == last_beads && std::bit_cast<std::uint64_t>(gamma) == last_gamma) return last_limit;
+  last_limit = rk4_stability_limit_uncached(beads, gamma);
+  last_beads = beads;
+  last_gamma = std::bit_cast<std::uint64_t>(gamma);
+  return last_limit;
+}
 
 double rk4_stability_limit(const ChainParams& params) {
   ChainParams p = params;
@@ -716,48 +740,12 @@ double rk4_stability_limit(const ChainParams& params) {
           p.stiffness_of(j) * fput_stiffest_slope(p.threshold_of(j), p.fput_alpha, p.fput_beta);
     p.stiffness = std::move(k);
     p.fput_alpha = p.fput_beta = 0.0;
-    return rk4_stability_limit_for(largest_eigenvalue(p) * (1.0 + 1e-12), p.gamma);
+  } else if (p.uniform_dynamics()) {
+    return rk4_stability_limit(p.beads, p.gamma);
   }
-  if (p.uniform_dynamics()) return rk4_stability_limit(p.beads, p.gamma);
   // A relative margin of 1e-12 on lambda_max covers the Sturm count's rounding.
   return rk4_stability_limit_for(largest_eigenvalue(p) * (1.0 + 1e-12), p.gamma);
 }
-
-namespace {
-
-double rk4_stability_limit_uncached(int beads, double gamma) {
-  // RK4's amplification factor R(z) = 1 + z + z^2/2 + z^3/6 + z^4/24 must stay within the
-  // unit circle for z = h mu, mu = -gamma +- sqrt(gamma^2 - Omega^2), Omega = 2 sin(k/2) over
-  // the chain's modes. Omega fills (Omega_0, Omega_{N-1}); a fine sample of that range and a
-  // bisection in h give the limit to about 1e-6.
-  auto stable = [&](double h) {
-    const int samples = std::min(beads, 512);
-    for (int s = 0; s < samples; ++s) {
-      const int n = samples == beads
-                        ? s
-                        : static_cast<int>((static_cast<long>(beads - 1) * s) / (samples - 1));
-      const double k = (n + 0.5) * M_PI / (beads + 0.5);
-      const double omega = 2.0 * std::sin(0.5 * k);
-      const std::complex<double> root =
-          std::sqrt(std::complex<double>(gamma * gamma - omega * omega, 0.0));
-      for (const auto mu : {-gamma + root, -gamma - root}) {
-        const std::complex<double> z = h * mu;
-        const std::complex<double> r = 1.0 + z * (1.0 + z * (0.5 + z * (1.0 / 6.0 + z / 24.0)));
-        if (std::abs(r) > 1.0 + 1e-12) return false;
-      }
-    }
-    return true;
-  };
-  double lo = 0.0, hi = 4.0;
-  while (stable(hi) && hi < 1e6) hi *= 2.0;
-  for (int i = 0; i < 60; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (stable(mid) ? lo : hi) = mid;
-  }
-  return lo;
-}
-
-}  // namespace
 
 // Checkpoints (issue #26): the rest of Impl is scratch (next-step buffers, tiles, the drive's
 // cache of its last value) or decides only how steps are grouped (temporal blocks, small runs),
