@@ -35,6 +35,7 @@ constexpr int kChainBeads = 20000;
 struct StepBooks {
   double dissipated = 0.0, work = 0.0;
   bool finite = true;
+  bool candidates = false;  // a worker holds a crossing candidate
 };
 template <class Out>
 StepBooks step_books(int workers, Out out, const double force[3], double h) {
@@ -44,6 +45,7 @@ StepBooks step_books(int workers, Out out, const double force[3], double h) {
   for (int w = 0; w < workers; ++w) {
     const detail::StepOutput& o = out(w);
     b.finite = b.finite && o.finite;
+    b.candidates = b.candidates || !o.candidates.empty();
     for (int s = 0; s < 4; ++s) {
       b.dissipated += weights[s] * o.dissipation_rate[s];
       b.work += weights[s] * forces[s] * o.end_velocity[s];
@@ -52,6 +54,14 @@ StepBooks step_books(int workers, Out out, const double force[3], double h) {
   b.dissipated *= h / 6.0;
   b.work *= h / 6.0;
   return b;
+}
+
+// step_books of the workers' outputs of one step (Integrator::run_kernel).
+StepBooks step_books(const std::vector<detail::StepOutput>& outputs, const double force[3],
+                     double h) {
+  return step_books(
+      static_cast<int>(outputs.size()),
+      [&](int w) -> const detail::StepOutput& { return outputs[w]; }, force, h);
 }
 
 // The kernel's input for the chain as it is now, into the next-state arrays: everything but
@@ -203,21 +213,22 @@ bool Integrator::advance_to(std::int64_t target_step) {
 
 bool Integrator::step() {
   if (!error_.empty()) return false;
+  Impl& im = *impl_;
+  // The common step, one plain interval: a run of one plain step (plain_steps), on the kernel
+  // rk4() would take.
+  if (im.breakpoints_sorted) {
+    const int taken = plain_steps(1, [&](const detail::StepInput& in) {
+      run_kernel(in);
+      return step_books(im.outputs, in.force, in.h);
+    });
+    if (taken >= 0) return taken == 1;
+  }
+  // Any other step (a kick, jump or kink in it or at its start, a pull-string crossing): the
+  // general code, which for a plain step would make exactly plain_steps's kernel call.
   const double dt = options_.dt;
   const double t0 = static_cast<double>(state_.step) * dt;
   const double t1 = static_cast<double>(state_.step + 1) * dt;
   const double snap = 1e-9 * dt;  // closer than this to a grid time counts as on it
-
-  // The common step (Forcing::plain_step): the general code below would make exactly this
-  // one call.
-  Impl& im = *impl_;
-  if (im.breakpoints_sorted &&
-      forcing_.plain_step(im.next_breakpoint, im.next_kick, t0, t1, snap)) {
-    if (!advance_interval(t0, t1, false)) return false;
-    state_.step += 1;
-    state_.tau = t1;
-    return true;
-  }
 
   // Split the step at the drive's jumps, kinks and kicks that fall strictly inside it.
   std::vector<double>& cuts = cuts_;
@@ -286,24 +297,40 @@ bool Integrator::small_run_allowed() const {
          error_.empty();
 }
 
-// Up to `max_steps` steps of a small chain with every spring intact, as step() takes them, without
-// its dispatch per step: at N = 30 (AVX2) that dispatch and the run loop's cost ~430 instructions
-// a step against the kernel's ~1210, and slowed the step more than that (callgrind; the bench
-// README's session-7 numbers). Each
-// step must be one plain interval (Forcing::plain_step) without a pull-string crossing; its h and
-// drive values, kernel call, energy books and commit are those of step() -> advance_interval() ->
-// rk4() -> commit(), in the same order. A step whose output holds a crossing candidate or a value
-// that is not finite ends the run; as its first step, it goes on in advance_interval's own code
-// from that output (no second kernel call). Returns the steps taken, 0 when the state stopped
-// being finite, -1 when the first step is not plain (nothing done: step() takes it).
+// Up to `max_steps` plain steps of a small chain with every spring intact (small_run_allowed),
+// as step() takes them, without its dispatch per step: the copy of the chain kernel
+// im.chain_kernel would pick, found once, called directly. At N = 30 (AVX2) step()'s dispatch
+// and the run loop cost ~430 instructions a step against the kernel's ~1210 (callgrind; the
+// bench README's session-7 numbers).
 int Integrator::small_run(int max_steps) {
+  Impl& im = *impl_;
+  const detail::Rk4Chain kernel =
+      detail::rk4_chain_for(im.simd, chain_input(state_, params_, coef_, im.psi_next, im.vel_next));
+  detail::StepOutput& out = im.outputs[0];
+  return plain_steps(max_steps, [&](const detail::StepInput& in) {
+    out.reset();
+    kernel(in, out);
+    // step_books of the one worker, written out so that they are inlined here.
+    return step_books(
+        1, [&](int) -> const detail::StepOutput& { return out; }, in.force, in.h);
+  });
+}
+
+// How a plain step advances the chain, its energy books and its step count: the one rule of
+// step() (a run of one) and of a small chain's runs (small_run). Up to `max_steps` steps, each
+// one plain interval (Forcing::plain_step) without a pull-string crossing; `kernel(in)` integrates
+// the step of `in` into impl_->outputs and returns their step_books. Its h and drive values, the
+// kernel call, the books and the commit are those of advance_interval() -> rk4() -> commit(), in
+// the same order. A step whose output holds a crossing candidate or a value that is not finite
+// ends the run; as its first step, it goes on in advance_interval's own code from that output
+// (no second kernel call). Returns the steps taken, 0 when the state stopped being finite, -1
+// when the first step is not plain (nothing done: step()'s general code takes it).
+template <class Kernel>
+int Integrator::plain_steps(int max_steps, Kernel kernel) {
   Impl& im = *impl_;
   const double dt = options_.dt;
   const double snap = 1e-9 * dt;  // as in step()
   detail::StepInput in = chain_input(state_, params_, coef_, im.psi_next, im.vel_next);
-  // The copy of the chain kernel im.chain_kernel would pick at each call.
-  const detail::Rk4Chain kernel = detail::rk4_chain_for(im.simd, in);
-  detail::StepOutput& out = im.outputs[0];
   // What commit() and step() change, kept here until the run ends: the step count, the books
   // (added to step by step, in the same order), and which buffers hold the state (they trade
   // places at every step; state_ swaps them once at the end if they did an odd number of times).
@@ -312,11 +339,15 @@ int Integrator::small_run(int max_steps) {
   double *x = state_.psi.data(), *v = state_.vel.data();
   double *x_next = im.psi_next.data(), *v_next = im.vel_next.data();
   // drive_at's values without its cache and tests per call: f is a function of tau alone, a
-  // step's start is the last one's end (the value the cache would give), and the string cannot
-  // break within a run.
+  // step's start is the last one's end (f_end, the value the cache would give), and the string
+  // cannot break within a run. The cache learns the last end, where the next step starts.
   const bool driven = !state_.string_broken;
   const bool string_live = pull_string_live();
   auto drive = [&](double tau) { return driven ? forcing_(tau) : 0.0; };
+  double f_end = 0.0;
+  auto learn_end = [&](double t1) {
+    if (driven) im.drive.remember(t1, f_end);
+  };
   int k = 0;
   auto end_run = [&] {
     if (k % 2 == 1) {
@@ -327,6 +358,7 @@ int Integrator::small_run(int max_steps) {
     state_.tau = static_cast<double>(step) * dt;  // each step's t1, as commit() and step() set it
     state_.dissipated = dissipated;
     state_.work = work;
+    learn_end(state_.tau);
     return k;
   };
   for (; k < max_steps; ++k) {
@@ -336,22 +368,19 @@ int Integrator::small_run(int max_steps) {
       return k > 0 ? end_run() : -1;
     in.h = t1 - t0;
     // A step's start is the last one's end.
-    in.force[0] = k > 0 ? in.force[2] : drive(t0);
+    in.force[0] = k > 0 ? f_end : drive_at(t0);
     in.force[1] = drive(0.5 * (t0 + t1));
     in.force[2] = drive(t1);
-    // The pull string's crossing (advance_interval's test) is a break: step() takes that step.
+    // The pull string's crossing (advance_interval's test) is a break: step()'s general code
+    // takes that step.
     if (string_live && pull_string_crossing(t0, t1, in.force[2]) >= 0.0)
       return k > 0 ? end_run() : -1;
     in.psi = x;
     in.vel = v;
     in.psi_out = x_next;
     in.vel_out = v_next;
-    out.reset();
-    kernel(in, out);
-    // keep_books's sums, written out so that they are inlined here.
-    const StepBooks books = step_books(
-        1, [&](int) -> const detail::StepOutput& { return out; }, in.force, in.h);
-    if (!books.finite || !out.candidates.empty()) {
+    const StepBooks books = kernel(in);
+    if (!books.finite || books.candidates) {
       // A step that may break a spring or fail ends a run. After other steps the next call
       // redoes it, so that the caller sees those steps (a run loop's observers) before a
       // failure, as it would one step at a time.
@@ -360,6 +389,8 @@ int Integrator::small_run(int max_steps) {
         report_non_finite(t0);
         return 0;
       }
+      f_end = in.force[2];
+      learn_end(t1);
       stage_dissipation_ = books.dissipated;
       stage_work_ = books.work;
       if (!settle_interval(t0, t1, false)) return 0;
@@ -373,6 +404,7 @@ int Integrator::small_run(int max_steps) {
     dissipated += books.dissipated;
     work += books.work;
     step += 1;
+    f_end = in.force[2];
   }
   return end_run();
 }
@@ -475,6 +507,17 @@ bool Integrator::rk4(double ta, double tb, bool end_is_breakpoint) {
   in.force[0] = drive_at(ta);
   in.force[1] = drive_at(0.5 * (ta + tb));
   in.force[2] = drive_at(t_end);
+  run_kernel(in);
+  // The books, kept for commit(); false when a new value is not finite.
+  const StepBooks books = step_books(im.outputs, in.force, in.h);
+  stage_dissipation_ = books.dissipated;
+  stage_work_ = books.work;
+  return books.finite;
+}
+
+// One RK4 step of `in` on the chain as it is now, into the workers' outputs.
+void Integrator::run_kernel(const detail::StepInput& in) {
+  Impl& im = *impl_;
   if (im.chain_kernel && state_.broken.empty()) {
     // A small chain, no spring broken: one call, no tiles (same bits).
     im.outputs[0].reset();
@@ -485,18 +528,6 @@ bool Integrator::rk4(double ta, double tb, bool end_is_breakpoint) {
       im.kernel(in, im.ranges[w].first, im.ranges[w].second, im.scratch[w], im.outputs[w]);
     });
   }
-  return keep_books(in.force, in.h);
-}
-
-// The energy books of the step of h in the workers' outputs, with the drive's stage values
-// `force`, kept for commit(); false when a new value is not finite.
-bool Integrator::keep_books(const double force[3], double h) {
-  Impl& im = *impl_;
-  const StepBooks books = step_books(
-      im.pool.size(), [&](int w) -> const detail::StepOutput& { return im.outputs[w]; }, force, h);
-  stage_dissipation_ = books.dissipated;
-  stage_work_ = books.work;
-  return books.finite;
 }
 
 void Integrator::commit(double tb) {
