@@ -81,6 +81,19 @@ detail::StepInput chain_input(ChainState& state, const ChainParams& params,
   return in;
 }
 
+// Every field of a ChainState (chain.h) but psi and vel, which restore() and a hanging chain's
+// state() fill their own way, from `from` into `to`. A new field of ChainState goes here too.
+void copy_all_but_arrays(const ChainState& from, ChainState& to) {
+  to.broken = from.broken;
+  to.string_broken = from.string_broken;
+  to.step = from.step;
+  to.tau = from.tau;
+  to.work = from.work;
+  to.dissipated = from.dissipated;
+  to.break_loss = from.break_loss;
+  to.breaks = from.breaks;
+}
+
 }  // namespace
 
 struct Integrator::Impl {
@@ -158,8 +171,12 @@ Integrator::Integrator(const ChainParams& params, Forcing forcing, IntegratorOpt
 const ChainState& Integrator::hanging_state() const {
   if (shown_step_ != state_.step || shown_tau_ != state_.tau ||
       shown_breaks_ != state_.breaks.size() || shown_.psi.empty()) {
-    shown_ = state_;
-    for (std::size_t i = 0; i < shown_.psi.size(); ++i) shown_.psi[i] += eq_psi_[i];
+    // state_ with psi = u + psi_eq, made in one pass (not a copy of u, then the sum): the
+    // vectors keep their capacity, so no allocation after the first call.
+    shown_.psi.resize(state_.psi.size());
+    for (std::size_t i = 0; i < shown_.psi.size(); ++i) shown_.psi[i] = state_.psi[i] + eq_psi_[i];
+    shown_.vel = state_.vel;
+    copy_all_but_arrays(state_, shown_);
     shown_step_ = state_.step;
     shown_tau_ = state_.tau;
     shown_breaks_ = state_.breaks.size();
@@ -791,14 +808,7 @@ void Integrator::restore(const ChainState& state, const Cursor& cursor) {
   // Copied into the arrays made at construction (zero_array's pages), not swapped for others.
   std::copy(state.psi.begin(), state.psi.end(), state_.psi.begin());
   std::copy(state.vel.begin(), state.vel.end(), state_.vel.begin());
-  state_.broken = state.broken;
-  state_.string_broken = state.string_broken;
-  state_.step = state.step;
-  state_.tau = state.tau;
-  state_.work = state.work;
-  state_.dissipated = state.dissipated;
-  state_.break_loss = state.break_loss;
-  state_.breaks = state.breaks;
+  copy_all_but_arrays(state, state_);
   impl_->next_kick = static_cast<std::size_t>(cursor.next_kick);
   impl_->next_breakpoint = static_cast<std::size_t>(cursor.next_breakpoint);
   error_.clear();

@@ -100,6 +100,10 @@ class Integrator {
   // state has moved since the last call, so a reference to it is current only until the next
   // step.
   const ChainState& state() const { return params_.hanging() ? hanging_state() : state_; }
+  // state().step and state().breaks, without making a hanging chain's psi (a pass over the
+  // chain): for loops that test them after every call of step_up_to.
+  std::int64_t steps_done() const { return state_.step; }
+  const std::vector<BreakEvent>& breaks() const { return state_.breaks; }
   const ChainParams& params() const { return params_; }
   // The chain's constants as the kernels read them, built once (coefficients.h).
   const ChainCoefficients& coefficients() const { return coef_; }
