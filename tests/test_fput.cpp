@@ -29,10 +29,7 @@ using cb::test::ramp_drive;
 
 cb::ChainParams fput_chain(int beads, double a, double b, double gamma = 0.0,
                            double threshold = std::numeric_limits<double>::infinity()) {
-  cb::ChainParams p;
-  p.beads = beads;
-  p.gamma = gamma;
-  p.threshold = threshold;
+  cb::ChainParams p = cb::test::chain_of(beads, gamma, threshold, cb::BreakMode::Abs, false);
   p.fput_alpha = a;
   p.fput_beta = b;
   return p;
