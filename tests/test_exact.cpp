@@ -4,7 +4,6 @@
 // independent computations written here: quadrature of the convolution and RK4.
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <fstream>
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <numbers>
@@ -13,16 +12,12 @@
 
 #include "drive/drive.h"
 #include "exact/exact_chain.h"
+#include "support/chain_test_support.h"
 
 namespace {
 
+using cb::test::load_test_data;
 using nlohmann::json;
-
-json load(const std::string& name) {
-  std::ifstream in(std::string(CHAINBREAK_TEST_DATA) + "/" + name);
-  REQUIRE(in);
-  return json::parse(in);
-}
 
 // |x - ref| <= rtol |ref| + atol, as the reference README asks.
 bool close(double x, double ref, double rtol, double atol) {
@@ -107,7 +102,7 @@ std::vector<double> rk4_psi(int N, double gamma, const std::function<double(doub
 }  // namespace
 
 TEST_CASE("Reference A: ramp f = tau, N = 30, gamma = 0 (psi, phi, energy)", "[exact]") {
-  const json ref = load("A_ramp_N30_gamma0.json");
+  const json ref = load_test_data("A_ramp_N30_gamma0.json");
   const cb::ExactChain chain(30, 0.0, drive_of(cb::DriveType::Ramp));
   for (const auto& r : ref["records"]) {
     const int j = r["j"];
@@ -131,7 +126,7 @@ TEST_CASE("Reference A: ramp f = tau, N = 30, gamma = 0 (psi, phi, energy)", "[e
 }
 
 TEST_CASE("Reference C: step f = u(tau), N = 30, gamma = 0.01 (psi)", "[exact]") {
-  const json ref = load("C_step_N30_gamma0.01.json");
+  const json ref = load_test_data("C_step_N30_gamma0.01.json");
   const cb::ExactChain chain(30, 0.01, drive_of(cb::DriveType::Step));
   std::vector<double> psi;
   for (const auto& r : ref["records"]) {
@@ -144,7 +139,7 @@ TEST_CASE("Reference C: step f = u(tau), N = 30, gamma = 0.01 (psi)", "[exact]")
 }
 
 TEST_CASE("Reference E: kicks at tau = 0 and 30, N = 30, gamma = 0 (phi)", "[exact]") {
-  const json ref = load("E_impulses_N30_gamma0.json");
+  const json ref = load_test_data("E_impulses_N30_gamma0.json");
   cb::DriveDesc d = drive_of(cb::DriveType::Impulses);
   d.times = {0.0, 30.0};
   const cb::ExactChain chain(30, 0.0, d);
@@ -157,7 +152,7 @@ TEST_CASE("Reference E: kicks at tau = 0 and 30, N = 30, gamma = 0 (phi)", "[exa
 }
 
 TEST_CASE("Reference H: Green's function, N = 30, gamma = 0.01", "[exact]") {
-  const json ref = load("H_green_N30_gamma0.01.json");
+  const json ref = load_test_data("H_green_N30_gamma0.01.json");
   const cb::ExactChain chain(30, 0.01, drive_of(cb::DriveType::Step));
   for (const auto& r : ref["records"]) {
     const int j = r["j"];

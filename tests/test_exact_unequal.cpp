@@ -7,7 +7,6 @@
 // and the uniform chain's closed form reached through the general (LAPACK) path.
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <string>
@@ -20,23 +19,13 @@
 #include "exact/first_break.h"
 #include "overlay/modes.h"
 #include "scene/scene.h"
+#include "support/chain_test_support.h"
 
 namespace {
 
+using cb::test::load_test_data;
+using cb::test::ramp_drive;
 using nlohmann::json;
-
-json load(const std::string& name) {
-  std::ifstream in(std::string(CHAINBREAK_TEST_DATA) + "/" + name);
-  REQUIRE(in);
-  return json::parse(in);
-}
-
-cb::DriveDesc ramp(double beta) {
-  cb::DriveDesc d;
-  d.type = cb::DriveType::Ramp;
-  d.beta = beta;
-  return d;
-}
 
 cb::ChainParams chain_from(const json& ref) {
   cb::ChainParams c;
@@ -80,9 +69,9 @@ cb::ChainParams unit_arrays(int beads, double gamma) {
 
 TEST_CASE("Unequal chain J (N = 10, gamma = 0.01): phi and psi against mpmath",
           "[exact][unequal]") {
-  const json ref = load("J_unequal_N10_gamma0.01.json");
+  const json ref = load_test_data("J_unequal_N10_gamma0.01.json");
   const cb::ChainParams chain = chain_from(ref);
-  const cb::ExactChain exact(chain, ramp(ref["beta"].get<double>()));
+  const cb::ExactChain exact(chain, ramp_drive(ref["beta"].get<double>()));
   REQUIRE_FALSE(exact.uniform());
   // Frequencies: LAPACK's against 40-digit eigenvalues, within chain_modes' stated bound.
   const auto omega2 = ref["omega2"].get<std::vector<double>>();
@@ -103,8 +92,8 @@ TEST_CASE("Unequal chain J (N = 10, gamma = 0.01): phi and psi against mpmath",
 
 TEST_CASE("Unequal chain I0 (N = 12, gamma = 0): phi against shared/reference",
           "[exact][unequal]") {
-  const json ref = load("I0_unequal_N12_gamma0.json");
-  const cb::ExactChain exact(chain_from(ref), ramp(ref["beta"].get<double>()));
+  const json ref = load_test_data("I0_unequal_N12_gamma0.json");
+  const cb::ExactChain exact(chain_from(ref), ramp_drive(ref["beta"].get<double>()));
   const double err = worst_deviation(exact, ref, "phi");
   INFO("max |dphi| " << err);
   // phi up to ~6 over tau <= 60; the reference agrees with an ODE integration to 1.4e-11.
@@ -129,7 +118,7 @@ TEST_CASE("Arrays of ones through LAPACK give the uniform chain's closed form",
     CHECK(worst_omega2 <= modes.omega2_error);
 
     if (n > 200) continue;  // the O(N^2) tables: the value check at N = 30 is enough
-    const cb::ExactChain general(ones, ramp(1.0)), closed(n, 0.01, ramp(1.0));
+    const cb::ExactChain general(ones, ramp_drive(1.0)), closed(n, 0.01, ramp_drive(1.0));
     REQUIRE_FALSE(general.uniform());
     std::vector<double> a, b;
     for (double tau : {0.5, 7.0, 31.0, 80.0, 200.0}) {
@@ -159,8 +148,8 @@ TEST_CASE("Arrays of ones give the uniform chain's first breaks", "[first_break]
     cb::ChainParams plain;
     plain.beads = 30;
     plain.threshold = zeta;
-    const cb::FirstBreak a = cb::exact_first_break(ones, ramp(1.0), 400.0);
-    const cb::FirstBreak b = cb::exact_first_break(plain, ramp(1.0), 400.0);
+    const cb::FirstBreak a = cb::exact_first_break(ones, ramp_drive(1.0), 400.0);
+    const cb::FirstBreak b = cb::exact_first_break(plain, ramp_drive(1.0), 400.0);
     INFO("zeta " << zeta << ": arrays spring " << a.spring << " at " << a.tau << ", uniform "
                  << b.spring << " at " << b.tau);
     REQUIRE(a.broke);
@@ -172,8 +161,8 @@ TEST_CASE("Arrays of ones give the uniform chain's first breaks", "[first_break]
 
 TEST_CASE("A weak link: the first break against the independently located one",
           "[first_break][unequal]") {
-  const json ref = load("J_unequal_N10_gamma0.01.json");
-  const cb::DriveDesc drive = ramp(ref["beta"].get<double>());
+  const json ref = load_test_data("J_unequal_N10_gamma0.01.json");
+  const cb::DriveDesc drive = ramp_drive(ref["beta"].get<double>());
   const json& expected = ref["first_break"];
   const json& one = ref["first_break_one_threshold"];
   cb::ChainParams chain = chain_from(ref);
@@ -208,7 +197,7 @@ TEST_CASE("A weak link: the first break against the independently located one",
 TEST_CASE("continuum refuses a chain of unequal beads or springs", "[exact][unequal]") {
   cb::SceneDesc scene;
   scene.path = "heavy.toml";
-  scene.drive = ramp(0.1);
+  scene.drive = ramp_drive(0.1);
   scene.integrator.t_end = 10.0;
   cb::RunRequest request;
   request.solver = cb::Solver::Continuum;
@@ -233,7 +222,7 @@ TEST_CASE("Mode bars of an unequal chain: the chain's own modes carry its energy
           "[overlay][unequal]") {
   // With all N modes, sum_n A_n^2 / 2 = sum_j (m_j psi_j'^2 + K_j phi_j^2) / 2 for any state:
   // true only if the shapes are mass-orthonormal eigenvectors of K with eigenvalues Omega_n^2.
-  const json ref = load("I0_unequal_N12_gamma0.json");
+  const json ref = load_test_data("I0_unequal_N12_gamma0.json");
   const cb::ChainParams chain = chain_from(ref);
   const int n = chain.beads;
   cb::ChainState state;
@@ -265,12 +254,12 @@ TEST_CASE("run --solver exact: an unequal chain's energy is the drive's work", "
   // = beta (tau psi_N(tau) - int_0^tau psi_N dt) for f = beta t; the integral by Simpson on
   // psi_N at step 0.005 (error ~1e-12 here). Only right with the masses and stiffnesses in the
   // energy books.
-  const json ref = load("I0_unequal_N12_gamma0.json");
+  const json ref = load_test_data("I0_unequal_N12_gamma0.json");
   cb::SceneDesc scene;
   scene.path = "i0.toml";
   scene.chain = chain_from(ref);
   const double beta = ref["beta"].get<double>();
-  scene.drive = ramp(beta);
+  scene.drive = ramp_drive(beta);
   scene.integrator.dt = 0.01;
   scene.integrator.t_end = 40.0;
   struct Rows : cb::RowSink {

@@ -5,7 +5,6 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -22,25 +21,18 @@
 #include "scene/scene.h"
 #include "scene/scene_writer.h"
 #include "scene_test_support.h"
+#include "support/chain_test_support.h"
 
 namespace {
 
+using cb::test::ramp_drive;
+
 cb::ChainParams fput_chain(int beads, double a, double b, double gamma = 0.0,
                            double threshold = std::numeric_limits<double>::infinity()) {
-  cb::ChainParams p;
-  p.beads = beads;
-  p.gamma = gamma;
-  p.threshold = threshold;
+  cb::ChainParams p = cb::test::chain_of(beads, gamma, threshold, cb::BreakMode::Abs, false);
   p.fput_alpha = a;
   p.fput_beta = b;
   return p;
-}
-
-cb::DriveDesc ramp(double beta) {
-  cb::DriveDesc d;
-  d.type = cb::DriveType::Ramp;
-  d.beta = beta;
-  return d;
 }
 
 bool same_bytes(const cb::ChainState& x, const cb::ChainState& y) {
@@ -100,7 +92,7 @@ TEST_CASE("fput: a = b = 0 through the Anharmonic policy gives the harmonic chai
     std::int64_t steps;
   };
   std::vector<Case> cases;
-  cases.push_back({fput_chain(30, 0.0, 0.0, 0.0, 1.0), ramp(0.05), 20000});
+  cases.push_back({fput_chain(30, 0.0, 0.0, 0.0, 1.0), ramp_drive(0.05), 20000});
   cb::DriveDesc step;
   step.type = cb::DriveType::Step;
   step.amplitude = 0.8;
@@ -140,12 +132,12 @@ TEST_CASE("fput: every kernel path and SIMD path gives the same bytes for an anh
   // A small chain (the one-chain wavefront kernel) against the tiled one.
   cb::ChainParams small = fput_chain(30, 0.3, 0.5, 0.0, 1.2);
   const cb::ChainState tiled =
-      run(small, ramp(0.05), 0.01, 6000, cb::SimdPath::Sse2, kPaths[1], false);
+      run(small, ramp_drive(0.05), 0.01, 6000, cb::SimdPath::Sse2, kPaths[1], false);
   CHECK(!tiled.breaks.empty());
   for (cb::SimdPath simd : {cb::SimdPath::Avx2, cb::SimdPath::Avx512}) {
     if (!cb::simd_supported(simd)) continue;
     INFO(cb::simd_name(simd));
-    CHECK(same_bytes(tiled, run(small, ramp(0.05), 0.01, 6000, simd, kPaths[0], false)));
+    CHECK(same_bytes(tiled, run(small, ramp_drive(0.05), 0.01, 6000, simd, kPaths[0], false)));
   }
 }
 
@@ -176,7 +168,7 @@ TEST_CASE("fput: RK4 is fourth order on an anharmonic ramp", "[fput]") {
   const cb::ChainParams p = fput_chain(8, 0.3, 0.5);
   const double t_end = 20.0;
   auto phi_at = [&](double dt) {
-    cb::Integrator sim(p, cb::make_forcing(ramp(0.05)), {dt});
+    cb::Integrator sim(p, cb::make_forcing(ramp_drive(0.05)), {dt});
     REQUIRE(sim.advance_to(static_cast<std::int64_t>(std::llround(t_end / dt))));
     std::vector<double> phi;
     for (int j = 1; j <= p.beads; ++j) phi.push_back(cb::extension(sim.state(), j));
@@ -204,7 +196,7 @@ TEST_CASE("fput: RK4 is fourth order on a hanging anharmonic ramp", "[fput][grav
   p.gravity = 0.02;
   const double t_end = 20.0;
   auto phi_at = [&](double dt) {
-    cb::Integrator sim(p, cb::make_forcing(ramp(0.05)), {dt});
+    cb::Integrator sim(p, cb::make_forcing(ramp_drive(0.05)), {dt});
     REQUIRE(sim.advance_to(static_cast<std::int64_t>(std::llround(t_end / dt))));
     std::vector<double> phi;
     for (int j = 1; j <= p.beads; ++j) phi.push_back(cb::extension(sim.state(), j));
@@ -229,7 +221,7 @@ TEST_CASE("fput: the energy books balance with the anharmonic potential", "[fput
   // books miss by the anharmonic energy (checked below, so the test sees the potential).
   for (double threshold : {std::numeric_limits<double>::infinity(), 1.2}) {
     const cb::ChainParams p = fput_chain(30, 0.3, 0.5, 0.0, threshold);
-    cb::Integrator sim(p, cb::make_forcing(ramp(0.02)), {0.01});
+    cb::Integrator sim(p, cb::make_forcing(ramp_drive(0.02)), {0.01});
     REQUIRE(sim.advance_to(10000));
     INFO("threshold " << threshold);
     if (std::isfinite(threshold)) CHECK(!sim.state().breaks.empty());
@@ -241,9 +233,7 @@ TEST_CASE("fput: the energy books balance with the anharmonic potential", "[fput
 }
 
 TEST_CASE("fput: RK4 against scipy's DOP853 at 1e-7", "[fput]") {
-  std::ifstream in(std::string(CHAINBREAK_TEST_DATA) + "/fput_dop853_reference.json");
-  REQUIRE(in);
-  const nlohmann::json ref = nlohmann::json::parse(in);
+  const nlohmann::json ref = cb::test::load_test_data("fput_dop853_reference.json");
   // Two chains on a table and one hanging (issue #24 with #22: gravity, in psi with its weight).
   REQUIRE(ref["cases"].size() == 3);
   for (const auto& c : ref["cases"]) {
@@ -255,7 +245,7 @@ TEST_CASE("fput: RK4 against scipy's DOP853 at 1e-7", "[fput]") {
       for (int j = 1; j <= p.beads; ++j)
         CHECK(eq[j - 1] == Approx(c["phi_eq"][j - 1].get<double>()).epsilon(1e-13));
     }
-    cb::Integrator sim(p, cb::make_forcing(ramp(c["ramp"])), {0.005});
+    cb::Integrator sim(p, cb::make_forcing(ramp_drive(c["ramp"])), {0.005});
     const auto& times = c["times"];
     double worst = 0.0, largest = 0.0;
     for (std::size_t k = 0; k < times.size(); ++k) {
@@ -366,11 +356,11 @@ TEST_CASE("fput: the overlay draws no exact lines for anharmonic springs and say
   cb::OverlaySetup setup;
   setup.tau_end = 10.0;
   cb::ChainParams p = fput_chain(30, 0.0, 0.5, 0.0, 1.5);
-  const cb::OverlayHistory anh(p, ramp(0.02), setup);
+  const cb::OverlayHistory anh(p, ramp_drive(0.02), setup);
   CHECK_FALSE(anh.data().exact);
   CHECK(anh.data().anharmonic);
   p.fput_beta = 0.0;
-  const cb::OverlayHistory harmonic(p, ramp(0.02), setup);
+  const cb::OverlayHistory harmonic(p, ramp_drive(0.02), setup);
   CHECK(harmonic.data().exact);
   CHECK_FALSE(harmonic.data().anharmonic);
 }

@@ -8,7 +8,6 @@
 //     psi = psi_b + v_b t + G t^2 / 2, which RK4 integrates exactly (a quadratic).
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -23,24 +22,14 @@
 #include "physics/lanes.h"
 #include "physics/simd.h"
 #include "scene/scene.h"
+#include "support/chain_test_support.h"
 #include "test_support.h"
 
 namespace {
 
+using cb::test::load_test_data;
+using cb::test::ramp_drive;
 using nlohmann::json;
-
-json load(const std::string& name) {
-  std::ifstream in(std::string(CHAINBREAK_TEST_DATA) + "/" + name);
-  REQUIRE(in);
-  return json::parse(in);
-}
-
-cb::DriveDesc ramp(double beta) {
-  cb::DriveDesc d;
-  d.type = cb::DriveType::Ramp;
-  d.beta = beta;
-  return d;
-}
 
 cb::DriveDesc no_pull() {
   cb::DriveDesc d;
@@ -147,7 +136,7 @@ TEST_CASE("Heald's ball: the lower string breaks first iff G < beta sin(1/beta)"
       const double beta = 0.01 + 0.0025 * i;  // 0.0125 .. 0.61
       const double boundary = beta * std::sin(1.0 / beta);
       if (std::abs(g - boundary) < 1e-6) continue;
-      const cb::FirstBreak fb = cb::exact_first_break(ball(g), ramp(beta), 10.0 / beta);
+      const cb::FirstBreak fb = cb::exact_first_break(ball(g), ramp_drive(beta), 10.0 / beta);
       INFO("G = " << g << ", beta = " << beta);
       REQUIRE(fb.broke);
       CHECK(fb.spring == (g < boundary ? 0 : 1));
@@ -158,7 +147,7 @@ TEST_CASE("Heald's ball: the lower string breaks first iff G < beta sin(1/beta)"
   }
   // The ball's upper string holds phi_1 = G + beta (tau - sin tau) (closed form of x'' = -x +
   // beta tau about the equilibrium); the exact solver gives it with its static offset.
-  const cb::ExactChain exact(ball(0.1), ramp(0.2));
+  const cb::ExactChain exact(ball(0.1), ramp_drive(0.2));
   for (double tau : {0.5, 2.0, 4.5})
     CHECK(exact.phi(1, tau) == Approx(0.1 + 0.2 * (tau - std::sin(tau))).margin(1e-14));
   // RK4 at points of the map (first breaks as a sweep finds them: each run to its first break).
@@ -166,10 +155,10 @@ TEST_CASE("Heald's ball: the lower string breaks first iff G < beta sin(1/beta)"
     for (double g : {0.03, 0.1}) {
       cb::IntegratorOptions o;
       o.dt = 0.01;
-      cb::Integrator sim(ball(g), cb::make_forcing(ramp(beta)), o);
+      cb::Integrator sim(ball(g), cb::make_forcing(ramp_drive(beta)), o);
       while (sim.state().breaks.empty() && sim.state().tau < 20.0 / beta) REQUIRE(sim.step());
       REQUIRE(!sim.state().breaks.empty());
-      const cb::FirstBreak fb = cb::exact_first_break(ball(g), ramp(beta), 20.0 / beta);
+      const cb::FirstBreak fb = cb::exact_first_break(ball(g), ramp_drive(beta), 20.0 / beta);
       INFO("G = " << g << ", beta = " << beta);
       CHECK(sim.state().breaks.front().spring == fb.spring);
       CHECK(sim.state().breaks.front().tau == Approx(fb.tau).margin(1e-7));
@@ -179,7 +168,7 @@ TEST_CASE("Heald's ball: the lower string breaks first iff G < beta sin(1/beta)"
 
 TEST_CASE("a hanging chain's exact solution and first break against an independent solver",
           "[gravity]") {
-  const json ref = load("K_hanging_N8.json");
+  const json ref = load_test_data("K_hanging_N8.json");
   const cb::ChainParams chain = hanging_reference_chain(ref);
   const double beta = ref["beta"].get<double>();
   // The equilibrium (numpy's dense solve of K psi = G m there, sums of weights here).
@@ -187,7 +176,7 @@ TEST_CASE("a hanging chain's exact solution and first break against an independe
   const std::vector<double> eq = chain.equilibrium_positions();
   for (std::size_t i = 0; i < eq.size(); ++i) CHECK(eq[i] == Approx(psi_eq[i]).margin(1e-13));
   // psi at the reference's times (DOP853 at 1e-13: agreement to ~1e-11).
-  const cb::ExactChain exact(chain, ramp(beta));
+  const cb::ExactChain exact(chain, ramp_drive(beta));
   const auto taus = ref["taus"].get<std::vector<double>>();
   const auto rows = ref["psi"].get<std::vector<std::vector<double>>>();
   std::vector<double> psi;
@@ -199,14 +188,14 @@ TEST_CASE("a hanging chain's exact solution and first break against an independe
   }
   CHECK(worst <= 1e-9);
   // The exact first break (the search against the shifted bounds).
-  const cb::FirstBreak fb = cb::exact_first_break(chain, ramp(beta), 200.0);
+  const cb::FirstBreak fb = cb::exact_first_break(chain, ramp_drive(beta), 200.0);
   REQUIRE(fb.broke);
   CHECK(fb.spring == ref["first_break"]["spring"].get<int>());
   CHECK(fb.tau == Approx(ref["first_break"]["tau"].get<double>()).margin(1e-8));
   // RK4 against the exact solution at 1e-7: psi on the way, then the first break.
   cb::IntegratorOptions o;
   o.dt = 0.005;
-  cb::Integrator sim(chain, cb::make_forcing(ramp(beta)), o);
+  cb::Integrator sim(chain, cb::make_forcing(ramp_drive(beta)), o);
   double rk4_worst = 0.0;
   for (int k = 1; k <= 10; ++k) {
     REQUIRE(sim.advance_to(200 * k));  // tau = k
@@ -318,8 +307,8 @@ TEST_CASE("lanes find a hanging chain's first break as Integrator does, bit for 
     chain.beads = 12;
     chain.threshold = 1.0;
     chain.gravity = 0.02 + 0.005 * k;
-    jobs.push_back(
-        {static_cast<std::size_t>(k), chain, cb::make_forcing(ramp(0.01 + 0.02 * k)), 0.01, 60000});
+    jobs.push_back({static_cast<std::size_t>(k), chain,
+                    cb::make_forcing(ramp_drive(0.01 + 0.02 * k)), 0.01, 60000});
   }
   for (cb::SimdPath path : {cb::SimdPath::Sse2, cb::SimdPath::Avx2, cb::SimdPath::Avx512}) {
     if (!cb::simd_supported(path)) continue;

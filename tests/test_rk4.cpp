@@ -4,20 +4,14 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "drive/drive.h"
 #include "physics/energy.h"
 #include "physics/integrator.h"
+#include "support/chain_test_support.h"
 
 namespace {
-
-nlohmann::json load_reference(const std::string& name) {
-  std::ifstream in(std::string(CHAINBREAK_TEST_DATA) + "/" + name);
-  REQUIRE(in.good());
-  return nlohmann::json::parse(in);
-}
 
 cb::ChainParams chain(int n, double gamma) {
   cb::ChainParams p;
@@ -39,7 +33,7 @@ void check_close(double x, double ref, double atol, double rtol) {
 }  // namespace
 
 TEST_CASE("RK4 at dt = 0.01 matches the exact ramp solution (reference A)", "[rk4]") {
-  const auto ref = load_reference("A_ramp_N30_gamma0.json");
+  const auto ref = cb::test::load_test_data("A_ramp_N30_gamma0.json");
   cb::DriveDesc ramp;
   ramp.type = cb::DriveType::Ramp;
   ramp.beta = 1.0;
@@ -56,7 +50,7 @@ TEST_CASE("RK4 at dt = 0.01 matches the exact ramp solution (reference A)", "[rk
 }
 
 TEST_CASE("RK4 energy per particle matches reference A, Eq. (energy)", "[rk4]") {
-  const auto ref = load_reference("A_ramp_N30_gamma0.json");
+  const auto ref = cb::test::load_test_data("A_ramp_N30_gamma0.json");
   cb::DriveDesc ramp;
   ramp.type = cb::DriveType::Ramp;
   const double dt = 0.01;
@@ -69,7 +63,7 @@ TEST_CASE("RK4 energy per particle matches reference A, Eq. (energy)", "[rk4]") 
 }
 
 TEST_CASE("RK4 step response with friction matches reference C", "[rk4]") {
-  const auto ref = load_reference("C_step_N30_gamma0.01.json");
+  const auto ref = cb::test::load_test_data("C_step_N30_gamma0.01.json");
   cb::DriveDesc step;
   step.type = cb::DriveType::Step;
   step.amplitude = 1.0;
@@ -82,7 +76,7 @@ TEST_CASE("RK4 step response with friction matches reference C", "[rk4]") {
 }
 
 TEST_CASE("RK4 with two velocity kicks matches reference E", "[rk4]") {
-  const auto ref = load_reference("E_impulses_N30_gamma0.json");
+  const auto ref = cb::test::load_test_data("E_impulses_N30_gamma0.json");
   cb::DriveDesc kicks;
   kicks.type = cb::DriveType::Impulses;
   kicks.times = {0.0, 30.0};
@@ -98,7 +92,7 @@ TEST_CASE("RK4 converges at fourth order", "[rk4]") {
   // Error at tau = 45 against the reference value psi_30(45) (reference A, j = 30), for
   // dt and dt/2: the ratio of errors is 2^4 = 16 for a fourth-order method. Accept 13..19
   // (the next order's terms and rounding move it a little).
-  const auto ref = load_reference("A_ramp_N30_gamma0.json");
+  const auto ref = cb::test::load_test_data("A_ramp_N30_gamma0.json");
   double exact = 0.0;
   for (const auto& r : ref["records"])
     if (r["tau"] == 45 && r["j"] == 30) exact = r["psi"];

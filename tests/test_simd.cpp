@@ -10,40 +10,13 @@
 #include "physics/integrator.h"
 #include "physics/run_loop.h"
 #include "physics/simd.h"
+#include "support/chain_test_support.h"
 #include "test_support.h"
 
 namespace {
 
-// The bytes of everything a run leaves behind: state, energy books, breaks.
-std::vector<unsigned char> state_bytes(const cb::ChainState& s) {
-  std::vector<unsigned char> out;
-  auto add = [&](const void* p, std::size_t n) {
-    const auto* c = static_cast<const unsigned char*>(p);
-    out.insert(out.end(), c, c + n);
-  };
-  add(s.psi.data(), s.psi.size() * sizeof(double));
-  add(s.vel.data(), s.vel.size() * sizeof(double));
-  add(s.broken.data(), s.broken.size() * sizeof(int));
-  for (double v : {s.tau, s.work, s.dissipated, s.break_loss}) add(&v, sizeof v);
-  for (const auto& b : s.breaks) {
-    add(&b.spring, sizeof b.spring);
-    add(&b.tau, sizeof b.tau);
-    add(&b.step, sizeof b.step);
-  }
-  return out;
-}
-
-// A chain of the cases below: their fields in one call.
-cb::ChainParams chain_of(int beads, double gamma, double threshold, cb::BreakMode mode,
-                         bool pull_string) {
-  cb::ChainParams p;
-  p.beads = beads;
-  p.gamma = gamma;
-  p.threshold = threshold;
-  p.break_on = mode;
-  p.pull_string = pull_string;
-  return p;
-}
+using cb::test::chain_of;
+using cb::test::state_bytes;
 
 struct Scene {
   const char* name;
@@ -58,26 +31,23 @@ std::vector<Scene> scenes() {
   std::vector<Scene> out;
   // The paper's N = 30 ramp with breaking: several springs go, so broken springs, the wall
   // and bead N all take the general stencil in the kernel.
-  Scene ramp{"ramp N=30 breaking", {}, {}, 0.01, 20000, 1};
-  ramp.chain.beads = 30;
-  ramp.chain.threshold = 1.0;
-  ramp.drive.type = cb::DriveType::Ramp;
-  ramp.drive.beta = 0.05;
-  out.push_back(ramp);
+  using cb::BreakMode;
+  out.push_back({"ramp N=30 breaking", chain_of(30, 0.0, 1.0, BreakMode::Abs, false),
+                 cb::test::ramp_drive(0.05), 0.01, 20000, 1});
   // Friction, a sine drive and a length that is no multiple of any vector width or tile.
-  Scene sine{"sine N=2053 gamma", {}, {}, 0.02, 3000, 1};
-  sine.chain.beads = 2053;
-  sine.chain.gamma = 0.05;
-  sine.chain.threshold = 0.9;
+  Scene sine{
+      "sine N=2053 gamma", chain_of(2053, 0.05, 0.9, BreakMode::Abs, false), {}, 0.02, 3000, 1};
   sine.drive.type = cb::DriveType::Sine;
   sine.drive.amplitude = 0.3;
   sine.drive.period = 4.7;
   out.push_back(sine);
   // Two workers (N >= 20000 per thread), breaking in the stretch-only mode.
-  Scene big{"step N=50001 2 threads", {}, {}, 0.05, 400, 2};
-  big.chain.beads = 50001;
-  big.chain.threshold = 0.6;
-  big.chain.break_on = cb::BreakMode::Stretch;
+  Scene big{"step N=50001 2 threads",
+            chain_of(50001, 0.0, 0.6, BreakMode::Stretch, false),
+            {},
+            0.05,
+            400,
+            2};
   big.drive.type = cb::DriveType::Step;
   big.drive.amplitude = 0.8;
   out.push_back(big);

@@ -6,7 +6,6 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -19,34 +18,14 @@
 #include "physics/lanes.h"
 #include "physics/run_loop.h"
 #include "physics/simd.h"
+#include "support/chain_test_support.h"
 
 namespace {
 
-// The bytes of everything a run leaves behind: state, energy books, breaks.
-std::vector<unsigned char> state_bytes(const cb::ChainState& s) {
-  std::vector<unsigned char> out;
-  auto add = [&](const void* p, std::size_t n) {
-    const auto* c = static_cast<const unsigned char*>(p);
-    out.insert(out.end(), c, c + n);
-  };
-  add(s.psi.data(), s.psi.size() * sizeof(double));
-  add(s.vel.data(), s.vel.size() * sizeof(double));
-  add(s.broken.data(), s.broken.size() * sizeof(int));
-  for (double v : {s.tau, s.work, s.dissipated, s.break_loss}) add(&v, sizeof v);
-  for (const auto& b : s.breaks) {
-    add(&b.spring, sizeof b.spring);
-    add(&b.tau, sizeof b.tau);
-    add(&b.step, sizeof b.step);
-  }
-  return out;
-}
-
-std::vector<cb::SimdPath> supported_paths() {
-  std::vector<cb::SimdPath> out;
-  for (cb::SimdPath p : {cb::SimdPath::Sse2, cb::SimdPath::Avx2, cb::SimdPath::Avx512})
-    if (cb::simd_supported(p)) out.push_back(p);
-  return out;
-}
+using cb::test::chain_of;
+using cb::test::load_test_data;
+using cb::test::state_bytes;
+using cb::test::supported_paths;
 
 // Every way Integrator can step a chain: the tiled kernel, the default (the one-chain wavefront
 // for a small chain on AVX2 / AVX-512), temporal blocks with the window kernel and with tiles,
@@ -104,12 +83,6 @@ cb::ChainParams unequal_chain(int n, double gamma, cb::BreakMode mode) {
   return p;
 }
 
-nlohmann::json load(const std::string& name) {
-  std::ifstream in(std::string(CHAINBREAK_TEST_DATA) + "/" + name);
-  REQUIRE(in.good());
-  return nlohmann::json::parse(in);
-}
-
 }  // namespace
 
 TEST_CASE("unit arrays give the homogeneous chain's bytes on every path", "[unequal]") {
@@ -121,32 +94,36 @@ TEST_CASE("unit arrays give the homogeneous chain's bytes on every path", "[uneq
     std::int64_t steps;
     bool threads;
   };
+  using cb::BreakMode;
   std::vector<Scene> scenes;
-  Scene ramp{"ramp N=30 breaking", {}, {}, 0.01, 20000, false};
-  ramp.chain.beads = 30;
-  ramp.chain.threshold = 1.0;
-  ramp.drive.beta = 0.05;
-  scenes.push_back(ramp);
-  Scene sine{"sine N=2053 friction", {}, {}, 0.02, 3000, false};
-  sine.chain.beads = 2053;
-  sine.chain.gamma = 0.05;
-  sine.chain.threshold = 0.3;
+  scenes.push_back({"ramp N=30 breaking", chain_of(30, 0.0, 1.0, BreakMode::Abs, false),
+                    cb::test::ramp_drive(0.05), 0.01, 20000, false});
+  Scene sine{"sine N=2053 friction",
+             chain_of(2053, 0.05, 0.3, BreakMode::Abs, false),
+             {},
+             0.02,
+             3000,
+             false};
   sine.drive.type = cb::DriveType::Sine;
   sine.drive.amplitude = 0.6;
   sine.drive.period = 4.7;
   scenes.push_back(sine);
-  Scene kicks{"kicks N=77 stretch", {}, {}, 0.01, 6000, false};
-  kicks.chain.beads = 77;
-  kicks.chain.threshold = 0.9;
-  kicks.chain.break_on = cb::BreakMode::Stretch;
+  Scene kicks{"kicks N=77 stretch",
+              chain_of(77, 0.0, 0.9, BreakMode::Stretch, false),
+              {},
+              0.01,
+              6000,
+              false};
   kicks.drive.type = cb::DriveType::Impulses;
   kicks.drive.times = {0.0, 10.005, 31.0};
   kicks.drive.strengths = {0.7, -0.9, 1.3};
   scenes.push_back(kicks);
-  Scene big{"step N=50001 stretch", {}, {}, 0.05, 300, true};
-  big.chain.beads = 50001;
-  big.chain.threshold = 0.6;
-  big.chain.break_on = cb::BreakMode::Stretch;
+  Scene big{"step N=50001 stretch",
+            chain_of(50001, 0.0, 0.6, BreakMode::Stretch, false),
+            {},
+            0.05,
+            300,
+            true};
   big.drive.type = cb::DriveType::Step;
   big.drive.amplitude = 0.7;
   scenes.push_back(big);
@@ -173,7 +150,7 @@ TEST_CASE("unit arrays give the homogeneous chain's bytes on every path", "[uneq
 TEST_CASE("RK4 of an unequal chain against the exact solution, on every path", "[unequal]") {
   // ../shared/reference/I0_unequal_N12_gamma0.json (tests/data): phi_j(tau) of the exact
   // modal solution in 40-digit arithmetic, ramp f = 0.05 tau, N = 12, gamma = 0.
-  const nlohmann::json ref = load("I0_unequal_N12_gamma0.json");
+  const nlohmann::json ref = load_test_data("I0_unequal_N12_gamma0.json");
   cb::ChainParams chain;
   chain.beads = 12;
   chain.mass = ref["masses"].get<std::vector<double>>();
@@ -295,7 +272,7 @@ TEST_CASE("an unequal chain's energy books balance", "[unequal][energy]") {
 TEST_CASE("a threshold array's first break against DOP853", "[unequal]") {
   // tests/data/unequal_first_break.json: tests/physics_oracle/unequal_first_break.py (scipy
   // DOP853 at rtol = atol = 1e-12 with terminal events; its tau is good to ~1e-10).
-  const nlohmann::json ref = load("unequal_first_break.json");
+  const nlohmann::json ref = load_test_data("unequal_first_break.json");
   for (const auto& c : ref["cases"]) {
     INFO(c["name"].get<std::string>());
     cb::ChainParams chain;

@@ -54,6 +54,11 @@ class DriveCache {
     }
     return value_;
   }
+  // What the cache would hold after asking for tau: `value` = forcing(tau), found elsewhere.
+  void remember(double tau, double value) {
+    tau_ = std::bit_cast<std::uint64_t>(tau);
+    value_ = value;
+  }
 
  private:
   std::uint64_t tau_ = 0x7ff8dead00000000ull;  // a NaN: no tau equals it

@@ -35,6 +35,7 @@ constexpr int kChainBeads = 20000;
 struct StepBooks {
   double dissipated = 0.0, work = 0.0;
   bool finite = true;
+  bool candidates = false;  // a worker holds a crossing candidate
 };
 template <class Out>
 StepBooks step_books(int workers, Out out, const double force[3], double h) {
@@ -44,6 +45,7 @@ StepBooks step_books(int workers, Out out, const double force[3], double h) {
   for (int w = 0; w < workers; ++w) {
     const detail::StepOutput& o = out(w);
     b.finite = b.finite && o.finite;
+    b.candidates = b.candidates || !o.candidates.empty();
     for (int s = 0; s < 4; ++s) {
       b.dissipated += weights[s] * o.dissipation_rate[s];
       b.work += weights[s] * forces[s] * o.end_velocity[s];
@@ -52,6 +54,14 @@ StepBooks step_books(int workers, Out out, const double force[3], double h) {
   b.dissipated *= h / 6.0;
   b.work *= h / 6.0;
   return b;
+}
+
+// step_books of the workers' outputs of one step (Integrator::run_kernel).
+StepBooks step_books(const std::vector<detail::StepOutput>& outputs, const double force[3],
+                     double h) {
+  return step_books(
+      static_cast<int>(outputs.size()),
+      [&](int w) -> const detail::StepOutput& { return outputs[w]; }, force, h);
 }
 
 // The kernel's input for the chain as it is now, into the next-state arrays: everything but
@@ -69,6 +79,19 @@ detail::StepInput chain_input(ChainState& state, const ChainParams& params,
   in.broken = &state.broken;
   in.coef = &coef;
   return in;
+}
+
+// Every field of a ChainState (chain.h) but psi and vel, which restore() and a hanging chain's
+// state() fill their own way, from `from` into `to`. A new field of ChainState goes here too.
+void copy_all_but_arrays(const ChainState& from, ChainState& to) {
+  to.broken = from.broken;
+  to.string_broken = from.string_broken;
+  to.step = from.step;
+  to.tau = from.tau;
+  to.work = from.work;
+  to.dissipated = from.dissipated;
+  to.break_loss = from.break_loss;
+  to.breaks = from.breaks;
 }
 
 }  // namespace
@@ -155,8 +178,12 @@ Integrator::Integrator(const ChainParams& params, Forcing forcing, IntegratorOpt
 const ChainState& Integrator::hanging_state() const {
   if (shown_step_ != state_.step || shown_tau_ != state_.tau ||
       shown_breaks_ != state_.breaks.size() || shown_.psi.empty()) {
-    shown_ = state_;
-    for (std::size_t i = 0; i < shown_.psi.size(); ++i) shown_.psi[i] += eq_psi_[i];
+    // state_ with psi = u + psi_eq, made in one pass (not a copy of u, then the sum): the
+    // vectors keep their capacity, so no allocation after the first call.
+    shown_.psi.resize(state_.psi.size());
+    for (std::size_t i = 0; i < shown_.psi.size(); ++i) shown_.psi[i] = state_.psi[i] + eq_psi_[i];
+    shown_.vel = state_.vel;
+    copy_all_but_arrays(state_, shown_);
     shown_step_ = state_.step;
     shown_tau_ = state_.tau;
     shown_breaks_ = state_.breaks.size();
@@ -210,21 +237,22 @@ bool Integrator::advance_to(std::int64_t target_step) {
 
 bool Integrator::step() {
   if (!error_.empty()) return false;
+  Impl& im = *impl_;
+  // The common step, one plain interval: a run of one plain step (plain_steps), on the kernel
+  // rk4() would take.
+  if (im.breakpoints_sorted) {
+    const int taken = plain_steps(1, [&](const detail::StepInput& in) {
+      run_kernel(in);
+      return step_books(im.outputs, in.force, in.h);
+    });
+    if (taken >= 0) return taken == 1;
+  }
+  // Any other step (a kick, jump or kink in it or at its start, a pull-string crossing): the
+  // general code, which for a plain step would make exactly plain_steps's kernel call.
   const double dt = options_.dt;
   const double t0 = static_cast<double>(state_.step) * dt;
   const double t1 = static_cast<double>(state_.step + 1) * dt;
   const double snap = 1e-9 * dt;  // closer than this to a grid time counts as on it
-
-  // The common step (Forcing::plain_step): the general code below would make exactly this
-  // one call.
-  Impl& im = *impl_;
-  if (im.breakpoints_sorted &&
-      forcing_.plain_step(im.next_breakpoint, im.next_kick, t0, t1, snap)) {
-    if (!advance_interval(t0, t1, false)) return false;
-    state_.step += 1;
-    state_.tau = t1;
-    return true;
-  }
 
   // Split the step at the drive's jumps, kinks and kicks that fall strictly inside it.
   std::vector<double>& cuts = cuts_;
@@ -293,24 +321,40 @@ bool Integrator::small_run_allowed() const {
          error_.empty();
 }
 
-// Up to `max_steps` steps of a small chain with every spring intact, as step() takes them, without
-// its dispatch per step: at N = 30 (AVX2) that dispatch and the run loop's cost ~430 instructions
-// a step against the kernel's ~1210, and slowed the step more than that (callgrind; the bench
-// README's session-7 numbers). Each
-// step must be one plain interval (Forcing::plain_step) without a pull-string crossing; its h and
-// drive values, kernel call, energy books and commit are those of step() -> advance_interval() ->
-// rk4() -> commit(), in the same order. A step whose output holds a crossing candidate or a value
-// that is not finite ends the run; as its first step, it goes on in advance_interval's own code
-// from that output (no second kernel call). Returns the steps taken, 0 when the state stopped
-// being finite, -1 when the first step is not plain (nothing done: step() takes it).
+// Up to `max_steps` plain steps of a small chain with every spring intact (small_run_allowed),
+// as step() takes them, without its dispatch per step: the copy of the chain kernel
+// im.chain_kernel would pick, found once, called directly. At N = 30 (AVX2) step()'s dispatch
+// and the run loop cost ~430 instructions a step against the kernel's ~1210 (callgrind; the
+// bench README's session-7 numbers).
 int Integrator::small_run(int max_steps) {
+  Impl& im = *impl_;
+  const detail::Rk4Chain kernel =
+      detail::rk4_chain_for(im.simd, chain_input(state_, params_, coef_, im.psi_next, im.vel_next));
+  detail::StepOutput& out = im.outputs[0];
+  return plain_steps(max_steps, [&](const detail::StepInput& in) {
+    out.reset();
+    kernel(in, out);
+    // step_books of the one worker, written out so that they are inlined here.
+    return step_books(
+        1, [&](int) -> const detail::StepOutput& { return out; }, in.force, in.h);
+  });
+}
+
+// How a plain step advances the chain, its energy books and its step count: the one rule of
+// step() (a run of one) and of a small chain's runs (small_run). Up to `max_steps` steps, each
+// one plain interval (Forcing::plain_step) without a pull-string crossing; `kernel(in)` integrates
+// the step of `in` into impl_->outputs and returns their step_books. Its h and drive values, the
+// kernel call, the books and the commit are those of advance_interval() -> rk4() -> commit(), in
+// the same order. A step whose output holds a crossing candidate or a value that is not finite
+// ends the run; as its first step, it goes on in advance_interval's own code from that output
+// (no second kernel call). Returns the steps taken, 0 when the state stopped being finite, -1
+// when the first step is not plain (nothing done: step()'s general code takes it).
+template <class Kernel>
+int Integrator::plain_steps(int max_steps, Kernel kernel) {
   Impl& im = *impl_;
   const double dt = options_.dt;
   const double snap = 1e-9 * dt;  // as in step()
   detail::StepInput in = chain_input(state_, params_, coef_, im.psi_next, im.vel_next);
-  // The copy of the chain kernel im.chain_kernel would pick at each call.
-  const detail::Rk4Chain kernel = detail::rk4_chain_for(im.simd, in);
-  detail::StepOutput& out = im.outputs[0];
   // What commit() and step() change, kept here until the run ends: the step count, the books
   // (added to step by step, in the same order), and which buffers hold the state (they trade
   // places at every step; state_ swaps them once at the end if they did an odd number of times).
@@ -319,11 +363,15 @@ int Integrator::small_run(int max_steps) {
   double *x = state_.psi.data(), *v = state_.vel.data();
   double *x_next = im.psi_next.data(), *v_next = im.vel_next.data();
   // drive_at's values without its cache and tests per call: f is a function of tau alone, a
-  // step's start is the last one's end (the value the cache would give), and the string cannot
-  // break within a run.
+  // step's start is the last one's end (f_end, the value the cache would give), and the string
+  // cannot break within a run. The cache learns the last end, where the next step starts.
   const bool driven = !state_.string_broken;
   const bool string_live = pull_string_live();
   auto drive = [&](double tau) { return driven ? forcing_(tau) : 0.0; };
+  double f_end = 0.0;
+  auto learn_end = [&](double t1) {
+    if (driven) im.drive.remember(t1, f_end);
+  };
   int k = 0;
   auto end_run = [&] {
     if (k % 2 == 1) {
@@ -334,6 +382,7 @@ int Integrator::small_run(int max_steps) {
     state_.tau = static_cast<double>(step) * dt;  // each step's t1, as commit() and step() set it
     state_.dissipated = dissipated;
     state_.work = work;
+    learn_end(state_.tau);
     return k;
   };
   for (; k < max_steps; ++k) {
@@ -343,22 +392,19 @@ int Integrator::small_run(int max_steps) {
       return k > 0 ? end_run() : -1;
     in.h = t1 - t0;
     // A step's start is the last one's end.
-    in.force[0] = k > 0 ? in.force[2] : drive(t0);
+    in.force[0] = k > 0 ? f_end : drive_at(t0);
     in.force[1] = drive(0.5 * (t0 + t1));
     in.force[2] = drive(t1);
-    // The pull string's crossing (advance_interval's test) is a break: step() takes that step.
+    // The pull string's crossing (advance_interval's test) is a break: step()'s general code
+    // takes that step.
     if (string_live && pull_string_crossing(t0, t1, in.force[2]) >= 0.0)
       return k > 0 ? end_run() : -1;
     in.psi = x;
     in.vel = v;
     in.psi_out = x_next;
     in.vel_out = v_next;
-    out.reset();
-    kernel(in, out);
-    // keep_books's sums, written out so that they are inlined here.
-    const StepBooks books = step_books(
-        1, [&](int) -> const detail::StepOutput& { return out; }, in.force, in.h);
-    if (!books.finite || !out.candidates.empty()) {
+    const StepBooks books = kernel(in);
+    if (!books.finite || books.candidates) {
       // A step that may break a spring or fail ends a run. After other steps the next call
       // redoes it, so that the caller sees those steps (a run loop's observers) before a
       // failure, as it would one step at a time.
@@ -367,6 +413,8 @@ int Integrator::small_run(int max_steps) {
         report_non_finite(t0);
         return 0;
       }
+      f_end = in.force[2];
+      learn_end(t1);
       stage_dissipation_ = books.dissipated;
       stage_work_ = books.work;
       if (!settle_interval(t0, t1, false)) return 0;
@@ -380,6 +428,7 @@ int Integrator::small_run(int max_steps) {
     dissipated += books.dissipated;
     work += books.work;
     step += 1;
+    f_end = in.force[2];
   }
   return end_run();
 }
@@ -482,6 +531,17 @@ bool Integrator::rk4(double ta, double tb, bool end_is_breakpoint) {
   in.force[0] = drive_at(ta);
   in.force[1] = drive_at(0.5 * (ta + tb));
   in.force[2] = drive_at(t_end);
+  run_kernel(in);
+  // The books, kept for commit(); false when a new value is not finite.
+  const StepBooks books = step_books(im.outputs, in.force, in.h);
+  stage_dissipation_ = books.dissipated;
+  stage_work_ = books.work;
+  return books.finite;
+}
+
+// One RK4 step of `in` on the chain as it is now, into the workers' outputs.
+void Integrator::run_kernel(const detail::StepInput& in) {
+  Impl& im = *impl_;
   if (im.chain_kernel && state_.broken.empty()) {
     // A small chain, no spring broken: one call, no tiles (same bits).
     im.outputs[0].reset();
@@ -492,18 +552,6 @@ bool Integrator::rk4(double ta, double tb, bool end_is_breakpoint) {
       im.kernel(in, im.ranges[w].first, im.ranges[w].second, im.scratch[w], im.outputs[w]);
     });
   }
-  return keep_books(in.force, in.h);
-}
-
-// The energy books of the step of h in the workers' outputs, with the drive's stage values
-// `force`, kept for commit(); false when a new value is not finite.
-bool Integrator::keep_books(const double force[3], double h) {
-  Impl& im = *impl_;
-  const StepBooks books = step_books(
-      im.pool.size(), [&](int w) -> const detail::StepOutput& { return im.outputs[w]; }, force, h);
-  stage_dissipation_ = books.dissipated;
-  stage_work_ = books.work;
-  return books.finite;
 }
 
 void Integrator::commit(double tb) {
@@ -622,24 +670,6 @@ bool spring_intact(const ChainState& s, int spring) {
 }
 
 namespace {
-double rk4_stability_limit_uncached(int beads, double gamma);
-}  // namespace
-
-double rk4_stability_limit(int beads, double gamma) {
-  // Scene validation asks for this once per value of a sweep, nearly always for the same chain,
-  // and the bisection below costs ~0.1 ms: two thirds of loading a sweep's 420 scenes. The last
-  // answer is kept per thread (same bits in, same answer out).
-  thread_local int last_beads = -1;
-  thread_local std::uint64_t last_gamma = 0;
-  thread_local double last_limit = 0.0;
-  if (beads == last_beads && std::bit_cast<std::uint64_t>(gamma) == last_gamma) return last_limit;
-  last_limit = rk4_stability_limit_uncached(beads, gamma);
-  last_beads = beads;
-  last_gamma = std::bit_cast<std::uint64_t>(gamma);
-  return last_limit;
-}
-
-namespace {
 
 // The largest eigenvalue of M^-1 K for the chain (K_{N+1} = 0), which has the eigenvalues of the
 // symmetric tridiagonal A = M^-1/2 K M^-1/2: a_j = (K_j + K_{j+1}) / m_j on the diagonal,
@@ -677,19 +707,18 @@ double largest_eigenvalue(const ChainParams& p) {
   return hi;
 }
 
-// The largest dt for which |R(h mu)| <= 1 for every mu = -gamma +- sqrt(gamma^2 - Omega^2) with
-// Omega^2 in [0, lambda_max]: every mode of any chain whose highest squared frequency is at
-// most lambda_max (friction is proportional to mass, so each mode has the same gamma).
-// Sampling the whole range, not the chain's own frequencies, makes it safe without knowing
-// them; the highest frequency is sampled exactly.
-double rk4_stability_limit_for(double lambda_max, double gamma) {
-  const double omega_max = std::sqrt(lambda_max);
+// The largest h for which classical RK4 is stable on modes of friction gamma and the frequencies
+// omega(s), s = 0 .. samples - 1: |R(h mu)| <= 1 (to 1e-12) for mu = -gamma +- sqrt(gamma^2 -
+// omega^2), with RK4's amplification factor R(z) = 1 + z + z^2/2 + z^3/6 + z^4/24. Found by
+// doubling h from 4 while stable (up to 1e6), then 60 bisections: to about 1e-6 relative of the
+// sampled frequencies' limit. The one test of both limits below (the uniform chain's own modes,
+// or a range that covers any chain's).
+template <class Omega>
+double rk4_stable_step(int samples, Omega omega, double gamma) {
   auto stable = [&](double h) {
-    constexpr int kSamples = 512;
-    for (int s = 1; s <= kSamples; ++s) {
-      const double omega = omega_max * s / kSamples;
-      const std::complex<double> root =
-          std::sqrt(std::complex<double>(gamma * gamma - omega * omega, 0.0));
+    for (int s = 0; s < samples; ++s) {
+      const double w = omega(s);
+      const std::complex<double> root = std::sqrt(std::complex<double>(gamma * gamma - w * w, 0.0));
       for (const auto mu : {-gamma + root, -gamma - root}) {
         const std::complex<double> z = h * mu;
         const std::complex<double> r = 1.0 + z * (1.0 + z * (0.5 + z * (1.0 / 6.0 + z / 24.0)));
@@ -707,7 +736,50 @@ double rk4_stability_limit_for(double lambda_max, double gamma) {
   return lo;
 }
 
+// The largest dt for which |R(h mu)| <= 1 for every mu = -gamma +- sqrt(gamma^2 - Omega^2) with
+// Omega^2 in [0, lambda_max]: every mode of any chain whose highest squared frequency is at
+// most lambda_max (friction is proportional to mass, so each mode has the same gamma).
+// Sampling the whole range, not the chain's own frequencies, makes it safe without knowing
+// them; the highest frequency is sampled exactly.
+double rk4_stability_limit_for(double lambda_max, double gamma) {
+  const double omega_max = std::sqrt(lambda_max);
+  constexpr int kSamples = 512;
+  return rk4_stable_step(
+      kSamples, [&](int s) { return omega_max * (s + 1) / kSamples; }, gamma);
+}
+
+double rk4_stability_limit_uncached(int beads, double gamma) {
+  // The chain's modes have Omega = 2 sin(k/2), k = (n + 1/2) pi / (N + 1/2), which fill
+  // (Omega_0, Omega_{N-1}): all of them up to 512 beads, else 512 spread over that range from
+  // the first to the last.
+  const int samples = std::min(beads, 512);
+  return rk4_stable_step(
+      samples,
+      [&](int s) {
+        const int n = samples == beads
+                          ? s
+                          : static_cast<int>((static_cast<long>(beads - 1) * s) / (samples - 1));
+        const double k = (n + 0.5) * M_PI / (beads + 0.5);
+        return 2.0 * std::sin(0.5 * k);
+      },
+      gamma);
+}
+
 }  // namespace
+
+double rk4_stability_limit(int beads, double gamma) {
+  // Scene validation asks for this once per value of a sweep, nearly always for the same chain,
+  // and the bisection below costs ~0.1 ms: two thirds of loading a sweep's 420 scenes. The last
+  // answer is kept per thread (same bits in, same answer out).
+  thread_local int last_beads = -1;
+  thread_local std::uint64_t last_gamma = 0;
+  thread_local double last_limit = 0.0;
+  if (beads == last_beads && std::bit_cast<std::uint64_t>(gamma) == last_gamma) return last_limit;
+  last_limit = rk4_stability_limit_uncached(beads, gamma);
+  last_beads = beads;
+  last_gamma = std::bit_cast<std::uint64_t>(gamma);
+  return last_limit;
+}
 
 double rk4_stability_limit(const ChainParams& params) {
   ChainParams p = params;
@@ -729,48 +801,12 @@ double rk4_stability_limit(const ChainParams& params) {
     }
     p.stiffness = std::move(k);
     p.fput_alpha = p.fput_beta = 0.0;
-    return rk4_stability_limit_for(largest_eigenvalue(p) * (1.0 + 1e-12), p.gamma);
+  } else if (p.uniform_dynamics()) {
+    return rk4_stability_limit(p.beads, p.gamma);
   }
-  if (p.uniform_dynamics()) return rk4_stability_limit(p.beads, p.gamma);
   // A relative margin of 1e-12 on lambda_max covers the Sturm count's rounding.
   return rk4_stability_limit_for(largest_eigenvalue(p) * (1.0 + 1e-12), p.gamma);
 }
-
-namespace {
-
-double rk4_stability_limit_uncached(int beads, double gamma) {
-  // RK4's amplification factor R(z) = 1 + z + z^2/2 + z^3/6 + z^4/24 must stay within the
-  // unit circle for z = h mu, mu = -gamma +- sqrt(gamma^2 - Omega^2), Omega = 2 sin(k/2) over
-  // the chain's modes. Omega fills (Omega_0, Omega_{N-1}); a fine sample of that range and a
-  // bisection in h give the limit to about 1e-6.
-  auto stable = [&](double h) {
-    const int samples = std::min(beads, 512);
-    for (int s = 0; s < samples; ++s) {
-      const int n = samples == beads
-                        ? s
-                        : static_cast<int>((static_cast<long>(beads - 1) * s) / (samples - 1));
-      const double k = (n + 0.5) * M_PI / (beads + 0.5);
-      const double omega = 2.0 * std::sin(0.5 * k);
-      const std::complex<double> root =
-          std::sqrt(std::complex<double>(gamma * gamma - omega * omega, 0.0));
-      for (const auto mu : {-gamma + root, -gamma - root}) {
-        const std::complex<double> z = h * mu;
-        const std::complex<double> r = 1.0 + z * (1.0 + z * (0.5 + z * (1.0 / 6.0 + z / 24.0)));
-        if (std::abs(r) > 1.0 + 1e-12) return false;
-      }
-    }
-    return true;
-  };
-  double lo = 0.0, hi = 4.0;
-  while (stable(hi) && hi < 1e6) hi *= 2.0;
-  for (int i = 0; i < 60; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (stable(mid) ? lo : hi) = mid;
-  }
-  return lo;
-}
-
-}  // namespace
 
 // Checkpoints (issue #26): the rest of Impl is scratch (next-step buffers, tiles, the drive's
 // cache of its last value) or decides only how steps are grouped (temporal blocks, small runs),
@@ -785,14 +821,7 @@ void Integrator::restore(const ChainState& state, const Cursor& cursor) {
   // Copied into the arrays made at construction (zero_array's pages), not swapped for others.
   std::copy(state.psi.begin(), state.psi.end(), state_.psi.begin());
   std::copy(state.vel.begin(), state.vel.end(), state_.vel.begin());
-  state_.broken = state.broken;
-  state_.string_broken = state.string_broken;
-  state_.step = state.step;
-  state_.tau = state.tau;
-  state_.work = state.work;
-  state_.dissipated = state.dissipated;
-  state_.break_loss = state.break_loss;
-  state_.breaks = state.breaks;
+  copy_all_but_arrays(state, state_);
   impl_->next_kick = static_cast<std::size_t>(cursor.next_kick);
   impl_->next_breakpoint = static_cast<std::size_t>(cursor.next_breakpoint);
   error_.clear();

@@ -36,6 +36,10 @@
 
 namespace cb {
 
+namespace detail {
+struct StepInput;  // physics/rk4_tile.h: one step's input to a kernel
+}  // namespace detail
+
 struct IntegratorOptions {
   double dt = 0.01;
   int threads = 1;  // worker threads for large N; 1 = run on the caller's thread
@@ -99,6 +103,10 @@ class Integrator {
   // when the state has moved since the last call, so a reference to it is current only until the
   // next step. A hanging chain of anharmonic springs is integrated in psi (the tiled kernel only).
   const ChainState& state() const { return coef_.hanging() ? hanging_state() : state_; }
+  // state().step and state().breaks, without making a hanging chain's psi (a pass over the
+  // chain): for loops that test them after every call of step_up_to.
+  std::int64_t steps_done() const { return state_.step; }
+  const std::vector<BreakEvent>& breaks() const { return state_.breaks; }
   const ChainParams& params() const { return params_; }
   // The chain's constants as the kernels read them, built once (coefficients.h).
   const ChainCoefficients& coefficients() const { return coef_; }
@@ -161,12 +169,14 @@ class Integrator {
   bool settle_interval(double t_from, double t_to, bool end_is_breakpoint);
   bool small_run_allowed() const;
   int small_run(int max_steps);  // -1 when the first step is not plain, else as step_up_to
+  template <class Kernel>
+  int plain_steps(int max_steps, Kernel kernel);  // as small_run, on `kernel`
   bool plain_step(std::int64_t step, double* h, double force[3]) const;
   bool pull_string_live() const;
   double pull_string_crossing(double t_from, double t_to, double f_end) const;
   int step_block(int count);  // -1 when done, else the first step found not plain
   bool rk4(double t_from, double t_to, bool end_is_breakpoint);  // into the scratch state
-  bool keep_books(const double force[3], double h);
+  void run_kernel(const detail::StepInput& in);  // one step of `in` into the outputs
   void commit(double t_to);
   void apply_kicks(double up_to);
   void break_spring(int spring, double tau);

@@ -13,7 +13,7 @@ RunEnd run_until(Integrator& sim, const StopRule& stop, const std::vector<Observ
   // `from`: the step before the last advance (a coarse observer sees the run if a multiple
   // of its `every` lies in (from, step]).
   auto observe = [&](bool start, std::int64_t from) {
-    const std::int64_t step = sim.state().step;
+    const std::int64_t step = sim.steps_done();
     for (const Observer& o : observers) {
       if (start ? o.at_start && step % o.every == 0
                 : (o.coarse ? step / o.every > from / o.every : step % o.every == 0))
@@ -24,21 +24,21 @@ RunEnd run_until(Integrator& sim, const StopRule& stop, const std::vector<Observ
   // A run resumed after its first break (the viewer, advance_to) applies the rule at once.
   bool break_seen = false;
   auto on_break = [&] {
-    if (break_seen || sim.state().breaks.empty()) return false;
+    if (break_seen || sim.breaks().empty()) return false;
     break_seen = true;
     if (stop.after_break)
-      last = std::min(
-          last, after_break_step(sim.state().breaks.front().tau, *stop.after_break, sim.dt()));
+      last =
+          std::min(last, after_break_step(sim.breaks().front().tau, *stop.after_break, sim.dt()));
     return stop.at_first_break;
   };
   if (on_break()) return RunEnd::Reached;
   observe(true, 0);
-  while (sim.state().step < last) {
+  while (sim.steps_done() < last) {
     if (stop.cancel && stop.cancel->load(std::memory_order_relaxed)) return RunEnd::Cancelled;
     // The steps up to the next observation or stop are plain as far as this loop is
     // concerned: the integrator may take them as one temporal block or a run of a small
     // chain's steps (never across a break), and this loop's tests are paid once for all.
-    const std::int64_t step = sim.state().step;
+    const std::int64_t step = sim.steps_done();
     std::int64_t room = last - step;
     for (const Observer& o : observers)
       if (!o.coarse) room = std::min(room, o.every - step % o.every);

@@ -195,11 +195,11 @@ std::vector<LaneEnd> ensemble_first_breaks(const ThresholdEnsemble& e,
   options.block_steps = 0;
   Integrator sim(ensemble.loosest(e.chain), e.forcing, options);
   sim.watch_crossings([&](const std::vector<detail::Candidate>& candidates, double ta, double tb) {
-    ensemble.watch(candidates, ta, tb, sim.state().step + 1);
+    ensemble.watch(candidates, ta, tb, sim.steps_done() + 1);
   });
-  while (ensemble.open() > 0 && sim.state().step < e.last_step) {
+  while (ensemble.open() > 0 && sim.steps_done() < e.last_step) {
     if (stop && stop->load(std::memory_order_relaxed)) break;
-    if (sim.step_up_to(e.last_step - sim.state().step) == 0) {
+    if (sim.step_up_to(e.last_step - sim.steps_done()) == 0) {
       ensemble.fail_open();
       break;
     }

@@ -1,0 +1,33 @@
+// Shared by the physics tests (test_simd, test_unequal, test_gravity, test_exact, ...): the bytes
+// of a run's result, the SIMD paths this CPU has, the chains and drives their cases are made of,
+// and the reference files of tests/data. Written once so that the tests compare like with like.
+#pragma once
+
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "drive/drive.h"
+#include "physics/chain.h"
+#include "physics/simd.h"
+
+namespace cb::test {
+
+// The bytes of everything a run leaves behind: state, energy books, breaks. Two runs agree to
+// the bit when these are equal.
+std::vector<unsigned char> state_bytes(const ChainState& s);
+
+// The instruction sets this CPU runs, SSE2 first.
+std::vector<SimdPath> supported_paths();
+
+// A uniform chain of `beads` beads with the given friction, threshold, break rule and pull string.
+ChainParams chain_of(int beads, double gamma, double threshold, BreakMode mode, bool pull_string);
+
+// The ramp f = beta tau.
+DriveDesc ramp_drive(double beta);
+
+// A JSON file of tests/data (CHAINBREAK_TEST_DATA), parsed; the test fails if it cannot be read.
+nlohmann::json load_test_data(const std::string& name);
+
+}  // namespace cb::test
