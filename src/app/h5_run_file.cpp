@@ -128,8 +128,7 @@ class H5RunFile : public RunFile {
   H5RunFile(const std::string& path, const RunDescription& d, int deflate,
             std::optional<std::uint64_t> resume_rows)
       : staged_(path, resume_partial_path(path)),
-        writer_(continued(staged_.temp(), path, resume_rows.has_value()),
-                resume_rows ? h5::Writer::Mode::Continue : h5::Writer::Mode::Create),
+        writer_(open_writer(staged_.temp(), path, resume_rows.has_value())),
         description_(d),
         deflate_(deflate),
         resume_rows_(resume_rows) {}
@@ -187,21 +186,40 @@ class H5RunFile : public RunFile {
   }
 
  private:
-  // The partial file to continue, checked before HDF5 opens it (its message would not say
-  // what to do).
-  static const std::string& continued(const std::string& partial, const std::string& path,
-                                      bool resume) {
+  // The partial file, created or continued; a file HDF5 cannot continue is refused as a
+  // checkpoint's output that is not there (exit 2, what to do), not as a failure of ours.
+  static h5::Writer open_writer(const std::string& partial, const std::string& path,
+                                bool resume) {
+    if (!resume) return h5::Writer(partial);
     std::error_code error;
-    if (resume && !std::filesystem::exists(partial, error))
+    if (!std::filesystem::exists(partial, error))
       throw OutputError(path + ": the partial file " + partial +
                         " that the checkpoint continues is missing; run again from the start");
-    return partial;
+    try {
+      return h5::Writer(partial, h5::Writer::Mode::Continue);
+    } catch (const h5::H5Error& e) {
+      throw cannot_continue(path, partial, e);
+    }
+  }
+  // HDF5 marks a file open for writing in its superblock until it is closed, and without SWMR
+  // does not keep a file whole across a crash: one the process was killed over (SIGKILL,
+  // a crash) after its last checkpoint is refused, never patched up.
+  static OutputError cannot_continue(const std::string& path, const std::string& partial,
+                                     const h5::H5Error& e) {
+    return OutputError(path + ": cannot continue the partial HDF5 file " + partial + " (" +
+                       e.what() +
+                       "): it was not closed (the run was killed, not stopped by SIGTERM or "
+                       "SIGINT), or it is damaged; run again from the start");
   }
   int open(const std::string& path, std::uint64_t columns, ChunkShape chunk) {
     if (!resume_rows_) return writer_.dataset({path, columns, chunk.rows, chunk.columns, deflate_});
-    const int id = writer_.open_dataset(path, columns);
-    writer_.truncate(id, *resume_rows_);
-    return id;
+    try {
+      const int id = writer_.open_dataset(path, columns);
+      writer_.truncate(id, *resume_rows_);
+      return id;
+    } catch (const h5::H5Error& e) {
+      throw cannot_continue(staged_.path(), staged_.temp(), e);
+    }
   }
   void flush() {
     for (Band& b : series_) b.flush();

@@ -79,7 +79,7 @@ Writer::Writer(const std::string& path, Mode mode) : path_(path) {
   H5Pset_libver_bounds(fapl.get(), H5F_LIBVER_V110, H5F_LIBVER_V110);
   if (mode == Mode::Continue) {
     file_ = H5Fopen(path.c_str(), H5F_ACC_RDWR, fapl.get());
-    require(file_ >= 0, path_, "cannot continue the HDF5 file (missing, or damaged?)");
+    require(file_ >= 0, path_, "HDF5 cannot open it for writing");
     return;
   }
   // Attributes stay in their object's header (compact storage, up to 64 of them) rather than

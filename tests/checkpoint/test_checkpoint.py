@@ -225,6 +225,29 @@ def test_resume_refuses_a_missing_partial_h5_file(tmp_path):
     assert ".out.h5.resume" in refused_with.stderr and "missing" in refused_with.stderr
 
 
+def test_an_h5_file_killed_after_its_checkpoint_is_refused_not_patched(tmp_path):
+    # HDF5 (without SWMR) keeps no file whole across a kill, and marks it open for writing
+    # until it is closed: after SIGKILL the resume refuses it (exit 2) and says what to do.
+    scene = SCENES / "anomalous_breaking.toml"
+    work = tmp_path / "killed"
+    work.mkdir()
+    p = subprocess.Popen([EXE, "run", str(scene), *SMALL, "--csv", "out.csv", "--h5", "out.h5",
+                          "--checkpoint", "run.ckpt", "--checkpoint-every", "0.1", "-q"],
+                         cwd=work, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    for _ in range(200):
+        if (work / "run.ckpt").exists():
+            break
+        time.sleep(0.02)
+    time.sleep(0.2)
+    p.send_signal(signal.SIGKILL)
+    p.communicate()
+    assert p.returncode == -signal.SIGKILL and (work / ".out.h5.resume").exists()
+    done = run(["--resume", "run.ckpt"], work)
+    assert done.returncode == 2, done.stderr
+    assert ".out.h5.resume" in done.stderr and "was not closed" in done.stderr
+    assert "run again from the start" in done.stderr and not (work / "out.h5").exists()
+
+
 def checkpointed(tmp_path, scene_path, outputs=("--csv", "out.csv")):
     """A run stopped by SIGTERM with its checkpoint: the folder."""
     work = tmp_path / "stopped"
