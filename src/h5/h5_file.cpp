@@ -87,6 +87,8 @@ Writer::Writer(const std::string& path, Mode mode) : path_(path) {
   // the root's 30-odd attributes then sit in checksummed headers, read in one piece.
   Handle fcpl(H5Pcreate(H5P_FILE_CREATE), H5Pclose);
   H5Pset_attr_phase_change(fcpl.get(), kCompactAttributes, kCompactAttributes - 1);
+  // No times in the object headers: two runs of the same scene write the same bytes.
+  H5Pset_obj_track_times(fcpl.get(), 0);
   file_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl.get(), fapl.get());
   require(file_ >= 0, path_, "cannot create the HDF5 file; choose a writable folder");
 }
@@ -98,10 +100,18 @@ Writer::~Writer() {
 }
 
 void Writer::group(const std::string& path) {
-  Handle lcpl(H5Pcreate(H5P_LINK_CREATE), H5Pclose);
-  H5Pset_create_intermediate_group(lcpl.get(), 1);
-  Handle g(H5Gcreate2(file_, path.c_str(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
-  require(g.ok(), path_, "cannot create the group " + path);
+  // One group at a time (not H5Pset_create_intermediate_group, whose groups would take the
+  // default properties: times in their headers).
+  Handle gcpl(H5Pcreate(H5P_GROUP_CREATE), H5Pclose);
+  H5Pset_obj_track_times(gcpl.get(), 0);
+  for (std::size_t end = path.find('/', 1);; end = path.find('/', end + 1)) {
+    const std::string prefix = path.substr(0, end);
+    if (H5Lexists(file_, prefix.c_str(), H5P_DEFAULT) <= 0) {
+      Handle g(H5Gcreate2(file_, prefix.c_str(), H5P_DEFAULT, gcpl.get(), H5P_DEFAULT), H5Gclose);
+      require(g.ok(), path_, "cannot create the group " + prefix);
+    }
+    if (end == std::string::npos) return;
+  }
 }
 
 int Writer::dataset(const DatasetSpec& spec) {
@@ -118,12 +128,13 @@ int Writer::dataset(const DatasetSpec& spec) {
     H5Pset_deflate(dcpl.get(), static_cast<unsigned>(spec.deflate));
   }
   H5Pset_attr_phase_change(dcpl.get(), kCompactAttributes, kCompactAttributes - 1);
+  H5Pset_obj_track_times(dcpl.get(), 0);
   Handle dapl = dataset_access();
-  Handle lcpl(H5Pcreate(H5P_LINK_CREATE), H5Pclose);
-  H5Pset_create_intermediate_group(lcpl.get(), 1);
+  const std::size_t parent = spec.path.rfind('/');
+  if (parent != std::string::npos && parent > 0) group(spec.path.substr(0, parent));
   const hid_t id =
       H5Dcreate2(file_, spec.path.c_str(), spec.integers ? H5T_STD_I64LE : H5T_IEEE_F64LE,
-                 space.get(), lcpl.get(), dcpl.get(), dapl.get());
+                 space.get(), H5P_DEFAULT, dcpl.get(), dapl.get());
   require(id >= 0, path_, "cannot create the dataset " + spec.path);
   datasets_.push_back({id, 0, spec.columns, spec.path});
   return static_cast<int>(datasets_.size() - 1);
