@@ -334,3 +334,18 @@ def test_a_checkpoint_that_cannot_be_written_keeps_the_previous_one(tmp_path):
     expected = json.loads(summary)
     del expected["csv"]
     assert json.loads(done.stdout) == expected
+
+
+def test_submit_slurm_passes_h5_to_the_job(tmp_path):
+    # The job's start command carries --h5 (absolute) and --h5-compress, so the HDF5 file is
+    # written and resumed with the CSV through the requeues; a stand-in sbatch takes the script.
+    bin_dir = tmp_path / "bin"
+    bin_dir.mkdir()
+    (bin_dir / "sbatch").write_text("#!/bin/sh\necho 42\n")
+    (bin_dir / "sbatch").chmod(0o755)
+    env = dict(os.environ, PATH=f"{bin_dir}:{os.environ['PATH']}")
+    done = run([SCENES / "anomalous_breaking.toml", "--csv", "out.csv", "--h5", "out.h5",
+                "--h5-compress", "2", "--submit", "slurm"], tmp_path, env=env)
+    assert done.returncode == 0, done.stderr
+    script = (tmp_path / "out.sbatch").read_text()
+    assert f"--h5 {tmp_path / 'out.h5'} --h5-compress 2" in script, script
