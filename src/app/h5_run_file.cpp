@@ -188,8 +188,7 @@ class H5RunFile : public RunFile {
  private:
   // The partial file, created or continued; a file HDF5 cannot continue is refused as a
   // checkpoint's output that is not there (exit 2, what to do), not as a failure of ours.
-  static h5::Writer open_writer(const std::string& partial, const std::string& path,
-                                bool resume) {
+  static h5::Writer open_writer(const std::string& partial, const std::string& path, bool resume) {
     if (!resume) return h5::Writer(partial);
     std::error_code error;
     if (!std::filesystem::exists(partial, error))

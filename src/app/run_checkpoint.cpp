@@ -16,8 +16,9 @@ std::vector<std::string> checkpoint_command(const RunOptions& o) {
   for (const Override& s : o.overrides) c.insert(c.end(), {"set", s.key + "=" + s.value});
   c.insert(c.end(),
            {"solver", solver_name(o.solver), "csv", o.csv, "every", std::to_string(o.every), "psi",
-            o.psi ? "1" : "0", "h5", o.h5, "h5_compress", std::to_string(o.h5_deflate), "threads", std::to_string(o.threads), "checkpoint", o.checkpoint,
-            "checkpoint_every", number_text(o.checkpoint_every)});
+            o.psi ? "1" : "0", "h5", o.h5, "h5_compress", std::to_string(o.h5_deflate), "threads",
+            std::to_string(o.threads), "checkpoint", o.checkpoint, "checkpoint_every",
+            number_text(o.checkpoint_every)});
   return c;
 }
 

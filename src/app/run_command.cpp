@@ -193,8 +193,7 @@ int run_loaded(const RunOptions& o, const SceneDesc& scene, const Checkpoint* re
                                            resume ? std::optional(resume->csv_bytes) : std::nullopt)
                   : csv_run_file(o.csv, scene.chain.beads, o.psi));
   if (!o.h5.empty()) {
-    const RunDescription description =
-        describe_run(scene, o.overrides, o.solver, o.every, o.psi);
+    const RunDescription description = describe_run(scene, o.overrides, o.solver, o.every, o.psi);
     files.add(checkpointing
                   ? resumable_h5_run_file(o.h5, description, o.h5_deflate,
                                           resume ? std::optional(resume->h5_rows) : std::nullopt)
