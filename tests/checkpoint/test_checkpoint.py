@@ -145,8 +145,8 @@ def h5_objects(f):
 
 def assert_same_h5(resumed, alone):
     """The datasets and attributes of two HDF5 files are equal value for value and bit for
-    bit (types, shapes, chunk shapes and filters too); returns how many were compared. The files'
-    bytes differ: a resumed file's cut-back datasets leave free space and moved chunks."""
+    bit (types, shapes, chunk shapes and filters too); returns how many were compared. The
+    files' bytes differ: HDF5 places what a reopened file adds from its end of file."""
     h5py = pytest.importorskip("h5py")
     import numpy as np
 
