@@ -2,8 +2,12 @@
 
 #include <algorithm>
 #include <cstring>
+#include <filesystem>
+#include <optional>
 
 #include "h5/h5_file.h"
+#include "output/output_file.h"
+#include "output/resumable_file.h"
 #include "output/staged_path.h"
 #include "physics/simd.h"
 #include "version.h"  // CHAINBREAK_VERSION
@@ -60,6 +64,7 @@ class Band {
     writer_.append(id_, data_.data(), count_);
     count_ = 0;
   }
+  int id() const { return id_; }
 
  private:
   h5::Writer& writer_;
@@ -118,25 +123,37 @@ class H5RunFile : public RunFile {
  public:
   H5RunFile(const std::string& path, const RunDescription& d, int deflate)
       : staged_(path), writer_(staged_.temp()), description_(d), deflate_(deflate) {}
+  // Resumable (run --checkpoint): under the stable partial name, kept when the run stops;
+  // `resume_rows`: continue that file from a checkpoint's row count.
+  H5RunFile(const std::string& path, const RunDescription& d, int deflate,
+            std::optional<std::uint64_t> resume_rows)
+      : staged_(path, resume_partial_path(path)),
+        writer_(open_writer(staged_.temp(), path, resume_rows.has_value())),
+        description_(d),
+        deflate_(deflate),
+        resume_rows_(resume_rows) {}
 
   void begin(int beads, bool with_psi, std::int64_t max_rows) override {
-    write_description(writer_, description_);
+    // A continued file has its description and datasets: they are opened and cut back to
+    // the checkpoint's rows (rows written after it, before the process stopped, go), with the
+    // chunk shapes of max_rows as before, so the rows that follow land as they would have.
+    if (!resume_rows_) write_description(writer_, description_);
     const ChunkShape line = chunk_shape(0, max_rows);
     for (const Series& s : kSeries) {
       const std::string path = std::string("/observables/") + s.name;
-      const int id = writer_.dataset({path, 0, line.rows, 1, deflate_});
+      series_.emplace_back(writer_, open(path, 0, line), 1, line.rows);
+      if (resume_rows_) continue;
       writer_.attr(path, "unit", std::string(s.unit));
       writer_.attr(path, "description", std::string(s.description));
-      series_.emplace_back(writer_, id, 1, line.rows);
     }
     const auto n = static_cast<std::uint64_t>(beads);
     const ChunkShape band = chunk_shape(n, max_rows);
     auto matrix = [&](const char* name, const char* unit, const char* what) {
       const std::string path = std::string("/chain/") + name;
-      const int id = writer_.dataset({path, n, band.rows, band.columns, deflate_});
+      matrices_.emplace_back(writer_, open(path, n, band), n, band.rows);
+      if (resume_rows_) return;
       writer_.attr(path, "unit", std::string(unit));
       writer_.attr(path, "description", std::string(what));
-      matrices_.emplace_back(writer_, id, n, band.rows);
     };
     matrix("phi", "l", "phi_j = psi_j - psi_{j-1}, spring j at column j-1");
     if (with_psi) {
@@ -162,8 +179,47 @@ class H5RunFile : public RunFile {
     writer_.close();
     staged_.commit();
   }
+  void sync(OutputsAt& at) override {
+    flush();  // partial bands too: a chunk begun here is completed after the checkpoint
+    writer_.flush();
+    at.h5_rows = writer_.rows(series_.front().id());
+  }
 
  private:
+  // The partial file, created or continued; a file HDF5 cannot continue is refused as a
+  // checkpoint's output that is not there (exit 2, what to do), not as a failure of ours.
+  static h5::Writer open_writer(const std::string& partial, const std::string& path, bool resume) {
+    if (!resume) return h5::Writer(partial);
+    std::error_code error;
+    if (!std::filesystem::exists(partial, error))
+      throw OutputError(path + ": the partial file " + partial +
+                        " that the checkpoint continues is missing; run again from the start");
+    try {
+      return h5::Writer(partial, h5::Writer::Mode::Continue);
+    } catch (const h5::H5Error& e) {
+      throw cannot_continue(path, partial, e);
+    }
+  }
+  // HDF5 marks a file open for writing in its superblock until it is closed, and without SWMR
+  // does not keep a file whole across a crash: one the process was killed over (SIGKILL,
+  // a crash) after its last checkpoint is refused, never patched up.
+  static OutputError cannot_continue(const std::string& path, const std::string& partial,
+                                     const h5::H5Error& e) {
+    return OutputError(path + ": cannot continue the partial HDF5 file " + partial + " (" +
+                       e.what() +
+                       "): it was not closed (the run was killed, not stopped by SIGTERM or "
+                       "SIGINT), or it is damaged; run again from the start");
+  }
+  int open(const std::string& path, std::uint64_t columns, ChunkShape chunk) {
+    if (!resume_rows_) return writer_.dataset({path, columns, chunk.rows, chunk.columns, deflate_});
+    try {
+      const int id = writer_.open_dataset(path, columns);
+      writer_.truncate(id, *resume_rows_);
+      return id;
+    } catch (const h5::H5Error& e) {
+      throw cannot_continue(staged_.path(), staged_.temp(), e);
+    }
+  }
   void flush() {
     for (Band& b : series_) b.flush();
     for (Band& b : matrices_) b.flush();
@@ -172,6 +228,7 @@ class H5RunFile : public RunFile {
   h5::Writer writer_;
   RunDescription description_;
   int deflate_;
+  std::optional<std::uint64_t> resume_rows_;
   std::vector<Band> series_, matrices_;
 };
 
@@ -196,6 +253,12 @@ ChunkShape chunk_shape(std::uint64_t columns, std::int64_t max_rows) {
 std::unique_ptr<RunFile> h5_run_file(const std::string& path, const RunDescription& description,
                                      int deflate) {
   return std::make_unique<H5RunFile>(path, description, deflate);
+}
+
+std::unique_ptr<RunFile> resumable_h5_run_file(const std::string& path,
+                                               const RunDescription& description, int deflate,
+                                               std::optional<std::uint64_t> resume_rows) {
+  return std::make_unique<H5RunFile>(path, description, deflate, resume_rows);
 }
 
 namespace {

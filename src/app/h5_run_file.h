@@ -16,6 +16,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,14 @@ namespace cb {
 // deflate at that level (--h5-compress).
 std::unique_ptr<RunFile> h5_run_file(const std::string& path, const RunDescription& description,
                                      int deflate);
+
+// The same file, resumable (run --checkpoint; RunFile::sync records its rows): written as
+// "<dir>/.<name>.resume" and kept when the run stops, or (resume_rows) that partial file
+// continued from a checkpoint's rows. Throws OutputError when it is missing, h5::H5Error when
+// HDF5 cannot continue it.
+std::unique_ptr<RunFile> resumable_h5_run_file(const std::string& path,
+                                               const RunDescription& description, int deflate,
+                                               std::optional<std::uint64_t> resume_rows);
 
 // The shape of a dataset's chunks: rows along time, columns along the chain.
 struct ChunkShape {

@@ -16,8 +16,9 @@ std::vector<std::string> checkpoint_command(const RunOptions& o) {
   for (const Override& s : o.overrides) c.insert(c.end(), {"set", s.key + "=" + s.value});
   c.insert(c.end(),
            {"solver", solver_name(o.solver), "csv", o.csv, "every", std::to_string(o.every), "psi",
-            o.psi ? "1" : "0", "threads", std::to_string(o.threads), "checkpoint", o.checkpoint,
-            "checkpoint_every", number_text(o.checkpoint_every)});
+            o.psi ? "1" : "0", "h5", o.h5, "h5_compress", std::to_string(o.h5_deflate), "threads",
+            std::to_string(o.threads), "checkpoint", o.checkpoint, "checkpoint_every",
+            number_text(o.checkpoint_every)});
   return c;
 }
 
@@ -53,6 +54,10 @@ RunOptions options_from_checkpoint(const Checkpoint& c, const std::string& file)
       }
     } else if (key == "csv") {
       o.csv = value;
+    } else if (key == "h5") {
+      o.h5 = value;
+    } else if (key == "h5_compress") {
+      o.h5_deflate = number();
     } else if (key == "every") {
       o.every = number();
     } else if (key == "psi") {
@@ -105,10 +110,6 @@ void check_checkpoint_options(const RunOptions& o) {
     throw SceneError(std::string("--checkpoint with --solver ") + solver_name(o.solver) +
                      ": the formulas compute any time directly and need no checkpoint; drop "
                      "--checkpoint, or use --solver rk4");
-  if (!o.h5.empty())
-    throw SceneError("--checkpoint with --h5 " + o.h5 +
-                     ": an HDF5 file cannot be resumed yet; write --csv with --checkpoint, or "
-                     "drop --checkpoint");
   if (std::isnan(o.checkpoint_every))
     throw SceneError("--checkpoint-every nan: expected seconds >= 0");
 }
@@ -138,7 +139,9 @@ void Checkpointer::see(const Integrator& sim, bool stopped) {
   c.next_kick = cursor.next_kick;
   c.next_breakpoint = cursor.next_breakpoint;
   try {
-    c.csv_bytes = files_.sync();  // the rows up to this state are on disk before the state is
+    const OutputsAt at = files_.sync();  // the rows up to this state are on disk before it is
+    c.csv_bytes = at.csv_bytes;
+    c.h5_rows = at.h5_rows;
     write_checkpoint(path_, c);
   } catch (const OutputError& e) {
     if (stopped) throw;

@@ -1,7 +1,7 @@
 // `run --checkpoint FILE [--checkpoint-every S]` and `run --resume FILE`: what a run's checkpoint
-// holds besides the physics (the options that resume it, the scene hash, the CSV's length), when
-// it is written (every S seconds of wall time, on SIGUSR1, and when SIGTERM or SIGINT stops the
-// run), and the checks before a resume (version, scene hash, sizes).
+// holds besides the physics (the options that resume it, the scene hash, how far the CSV and
+// the HDF5 file got), when it is written (every S seconds of wall time, on SIGUSR1, and when
+// SIGTERM or SIGINT stops the run), and the checks before a resume (version, scene hash, sizes).
 #pragma once
 
 #include <chrono>
@@ -25,7 +25,7 @@ RunOptions options_from_checkpoint(const Checkpoint& c, const std::string& file)
 void check_resume(const Checkpoint& c, const std::string& file, const SceneDesc& scene,
                   const std::string& scene_hash);
 
-// Refuses (SceneError) --checkpoint with what it cannot resume: a formula solver, --h5.
+// Refuses (SceneError) --checkpoint with what it cannot resume: a formula solver.
 void check_checkpoint_options(const RunOptions& o);
 
 // Sees the run between steps and writes the checkpoint when it is due.

@@ -192,9 +192,13 @@ int run_loaded(const RunOptions& o, const SceneDesc& scene, const Checkpoint* re
                   ? resumable_csv_run_file(o.csv, scene.chain.beads, o.psi,
                                            resume ? std::optional(resume->csv_bytes) : std::nullopt)
                   : csv_run_file(o.csv, scene.chain.beads, o.psi));
-  if (!o.h5.empty())
-    files.add(h5_run_file(o.h5, describe_run(scene, o.overrides, o.solver, o.every, o.psi),
-                          o.h5_deflate));
+  if (!o.h5.empty()) {
+    const RunDescription description = describe_run(scene, o.overrides, o.solver, o.every, o.psi);
+    files.add(checkpointing
+                  ? resumable_h5_run_file(o.h5, description, o.h5_deflate,
+                                          resume ? std::optional(resume->h5_rows) : std::nullopt)
+                  : h5_run_file(o.h5, description, o.h5_deflate));
+  }
   std::unique_ptr<Checkpointer> checkpointer;
   if (checkpointing) {
     checkpointer = std::make_unique<Checkpointer>(o, scene_hash(o.scene, o.overrides), files);

@@ -27,12 +27,9 @@ void RunFiles::commit() {
   for (auto& f : files_) f->commit();
 }
 
-std::uint64_t RunFiles::sync() {
-  std::uint64_t at = 0;
-  for (auto& f : files_) {
-    const std::uint64_t here = f->sync();
-    if (!at) at = here;
-  }
+OutputsAt RunFiles::sync() {
+  OutputsAt at;
+  for (auto& f : files_) f->sync(at);
   return at;
 }
 
@@ -90,9 +87,9 @@ class CsvRunFile : public RunFile {
     flush();
     file_.commit();
   }
-  std::uint64_t sync() override {
+  void sync(OutputsAt& at) override {
     flush();
-    return file_.sync();
+    at.csv_bytes = file_.sync();
   }
 
  private:

@@ -14,14 +14,20 @@
 
 namespace cb {
 
+// How far a run's resumable files got at a checkpoint (checkpoint/checkpoint.h keeps it).
+struct OutputsAt {
+  std::uint64_t csv_bytes = 0;  // the CSV's partial file, header included
+  std::uint64_t h5_rows = 0;    // rows of each dataset of the HDF5 file
+};
+
 // One file of a run's rows.
 class RunFile : public RowSink {
  public:
   // Finishes the file and renames it into place; throws OutputError (disk full, ...).
   virtual void commit() = 0;
-  // A checkpoint: makes what was written durable and returns how far it got (the CSV: bytes).
-  // Only files made resumable support it (0 otherwise).
-  virtual std::uint64_t sync() { return 0; }
+  // A checkpoint: makes what was written durable and records how far it got in `at`. Only
+  // files made resumable support it (the others leave `at` alone).
+  virtual void sync(OutputsAt& /*at*/) {}
 };
 
 // Every file a run writes, fed the same rows and committed together.
@@ -33,8 +39,8 @@ class RunFiles : public RowSink {
   void row(const RunRow& row) override;
   void end(const RunOutcome& outcome) override;
   void commit();
-  // The CSV's length for a checkpoint (RunFile::sync of each; the first non-zero one).
-  std::uint64_t sync();
+  // How far the files got, for a checkpoint (RunFile::sync of each).
+  OutputsAt sync();
 
  private:
   std::vector<std::unique_ptr<RunFile>> files_;

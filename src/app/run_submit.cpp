@@ -43,6 +43,10 @@ std::vector<std::string> start_command(const RunOptions& o) {
                      "--every", std::to_string(o.every), "--threads", std::to_string(o.threads),
                      "--checkpoint", fs::absolute(o.checkpoint).string()});
   if (o.psi) c.push_back("--psi");
+  if (!o.h5.empty()) {  // resumable with the CSV (run_checkpoint.h)
+    c.insert(c.end(), {"--h5", fs::absolute(o.h5).string()});
+    if (o.h5_deflate) c.insert(c.end(), {"--h5-compress", std::to_string(o.h5_deflate)});
+  }
   if (o.checkpoint_every >= 0)
     c.insert(c.end(), {"--checkpoint-every", number_text(o.checkpoint_every)});
   return c;
@@ -80,6 +84,7 @@ int submit_run(const RunOptions& given) {
   check_run_request(scene, request);
   check_checkpoint_options(o);
   check_output_path(o.csv, "out.csv");
+  if (!o.h5.empty()) check_output_path(o.h5, "out.h5");
   check_output_path(o.checkpoint, "run.ckpt");
   if (!on_path("sbatch"))
     throw GridError(

@@ -13,7 +13,8 @@ namespace cb {
 
 namespace {
 
-constexpr char kMagic[8] = {'C', 'B', 'C', 'K', 'P', 'T', '0', '1'};
+// 02: h5_rows after csv_bytes (01 had no HDF5 file to resume; refused as not a checkpoint).
+constexpr char kMagic[8] = {'C', 'B', 'C', 'K', 'P', 'T', '0', '2'};
 constexpr std::size_t kHeader = 8 + 8 + 8;  // magic, payload length, checksum
 
 std::uint64_t fnv1a(const char* data, std::size_t size) {
@@ -124,6 +125,7 @@ std::string encode_checkpoint(const Checkpoint& c) {
   p.u64(c.next_kick);
   p.u64(c.next_breakpoint);
   p.u64(c.csv_bytes);
+  p.u64(c.h5_rows);
   Out file;
   file.bytes().assign(kMagic, sizeof kMagic);
   file.u64(p.bytes().size());
@@ -133,7 +135,7 @@ std::string encode_checkpoint(const Checkpoint& c) {
 
 Checkpoint decode_checkpoint(const std::string& bytes) {
   if (bytes.size() < kHeader || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)
-    throw CheckpointError("not a chainbreak checkpoint (no CBCKPT01 header)");
+    throw CheckpointError("not a chainbreak checkpoint (no CBCKPT02 header)");
   In header(bytes.data() + 8, 16);
   const std::uint64_t length = header.u64(), checksum = header.u64();
   if (length != bytes.size() - kHeader)
@@ -168,6 +170,7 @@ Checkpoint decode_checkpoint(const std::string& bytes) {
   c.next_kick = p.u64();
   c.next_breakpoint = p.u64();
   c.csv_bytes = p.u64();
+  c.h5_rows = p.u64();
   if (!p.done()) throw CheckpointError("bytes left over after the state");
   if (s.psi.size() != s.vel.size() || s.step < 0)
     throw CheckpointError("the state does not hold together");

@@ -1,6 +1,7 @@
 #include "h5/h5_file.h"
 
 #include <hdf5.h>
+#include <unistd.h>
 
 #include <limits>
 #include <memory>
@@ -44,22 +45,51 @@ void require(bool ok, const std::string& file, const std::string& what) {
   if (!ok) throw H5Error(file + ": " + what);
 }
 
-Handle string_type() {
+// A UTF-8 string type; `size` 0: variable length (only for reading files of older versions).
+Handle string_type(std::size_t size) {
   Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
-  H5Tset_size(type.get(), H5T_VARIABLE);
+  H5Tset_size(type.get(), size ? size : H5T_VARIABLE);
   H5Tset_cset(type.get(), H5T_CSET_UTF8);
+  // Exactly the text's bytes, no terminator stored (padded with NULs only when empty).
+  if (size) H5Tset_strpad(type.get(), H5T_STR_NULLPAD);
   return type;
+}
+
+constexpr unsigned kCompactAttributes = 64;
+
+// A dataset's access: no chunk cache, bands of whole chunks go straight to the file (design
+// note).
+Handle dataset_access() {
+  Handle dapl(H5Pcreate(H5P_DATASET_ACCESS), H5Pclose);
+  H5Pset_chunk_cache(dapl.get(), 0, 0, H5D_CHUNK_CACHE_W0_DEFAULT);
+  return dapl;
 }
 
 }  // namespace
 
-Writer::Writer(const std::string& path) : path_(path) {
+Writer::Writer(const std::string& path, Mode mode) : path_(path) {
   quiet_library();
-  // HDF5 1.10's format: its chunk index for one unlimited dimension (an extensible array)
-  // takes less room and time than 1.8's B-tree; HDF5 >= 1.10 (h5py, h5dump) reads it.
+  // HDF5 1.10's format, the newest 1.10.8 writes: its chunk index for one unlimited dimension
+  // (an extensible array) takes less room and time than 1.8's B-tree, and the superblock
+  // (version 3), object headers (version 2), B-trees (version 2) and the extensible array
+  // carry checksums, so a reader is told of damaged metadata instead of following it. HDF5
+  // >= 1.10 (h5py, h5dump) reads it. A continued file keeps the bounds, so what is added to
+  // it is of the same versions.
   Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
   H5Pset_libver_bounds(fapl.get(), H5F_LIBVER_V110, H5F_LIBVER_V110);
-  file_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get());
+  if (mode == Mode::Continue) {
+    file_ = H5Fopen(path.c_str(), H5F_ACC_RDWR, fapl.get());
+    require(file_ >= 0, path_, "HDF5 cannot open it for writing");
+    return;
+  }
+  // Attributes stay in their object's header (compact storage, up to 64 of them) rather than
+  // moving to dense storage (a fractal heap and a B-tree of names) past HDF5's default of 8:
+  // the root's 30-odd attributes then sit in checksummed headers, read in one piece.
+  Handle fcpl(H5Pcreate(H5P_FILE_CREATE), H5Pclose);
+  H5Pset_attr_phase_change(fcpl.get(), kCompactAttributes, kCompactAttributes - 1);
+  // No times in the object headers: two runs of the same scene write the same bytes.
+  H5Pset_obj_track_times(fcpl.get(), 0);
+  file_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl.get(), fapl.get());
   require(file_ >= 0, path_, "cannot create the HDF5 file; choose a writable folder");
 }
 
@@ -70,10 +100,18 @@ Writer::~Writer() {
 }
 
 void Writer::group(const std::string& path) {
-  Handle lcpl(H5Pcreate(H5P_LINK_CREATE), H5Pclose);
-  H5Pset_create_intermediate_group(lcpl.get(), 1);
-  Handle g(H5Gcreate2(file_, path.c_str(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
-  require(g.ok(), path_, "cannot create the group " + path);
+  // One group at a time (not H5Pset_create_intermediate_group, whose groups would take the
+  // default properties: times in their headers).
+  Handle gcpl(H5Pcreate(H5P_GROUP_CREATE), H5Pclose);
+  H5Pset_obj_track_times(gcpl.get(), 0);
+  for (std::size_t end = path.find('/', 1);; end = path.find('/', end + 1)) {
+    const std::string prefix = path.substr(0, end);
+    if (H5Lexists(file_, prefix.c_str(), H5P_DEFAULT) <= 0) {
+      Handle g(H5Gcreate2(file_, prefix.c_str(), H5P_DEFAULT, gcpl.get(), H5P_DEFAULT), H5Gclose);
+      require(g.ok(), path_, "cannot create the group " + prefix);
+    }
+    if (end == std::string::npos) return;
+  }
 }
 
 int Writer::dataset(const DatasetSpec& spec) {
@@ -89,17 +127,55 @@ int Writer::dataset(const DatasetSpec& spec) {
     H5Pset_shuffle(dcpl.get());  // bytes of equal weight together: doubles deflate better
     H5Pset_deflate(dcpl.get(), static_cast<unsigned>(spec.deflate));
   }
-  // No chunk cache: bands of whole chunks go straight to the file (design note).
-  Handle dapl(H5Pcreate(H5P_DATASET_ACCESS), H5Pclose);
-  H5Pset_chunk_cache(dapl.get(), 0, 0, H5D_CHUNK_CACHE_W0_DEFAULT);
-  Handle lcpl(H5Pcreate(H5P_LINK_CREATE), H5Pclose);
-  H5Pset_create_intermediate_group(lcpl.get(), 1);
+  H5Pset_attr_phase_change(dcpl.get(), kCompactAttributes, kCompactAttributes - 1);
+  H5Pset_obj_track_times(dcpl.get(), 0);
+  Handle dapl = dataset_access();
+  const std::size_t parent = spec.path.rfind('/');
+  if (parent != std::string::npos && parent > 0) group(spec.path.substr(0, parent));
   const hid_t id =
       H5Dcreate2(file_, spec.path.c_str(), spec.integers ? H5T_STD_I64LE : H5T_IEEE_F64LE,
-                 space.get(), lcpl.get(), dcpl.get(), dapl.get());
+                 space.get(), H5P_DEFAULT, dcpl.get(), dapl.get());
   require(id >= 0, path_, "cannot create the dataset " + spec.path);
   datasets_.push_back({id, 0, spec.columns, spec.path});
   return static_cast<int>(datasets_.size() - 1);
+}
+
+int Writer::open_dataset(const std::string& path, std::uint64_t columns) {
+  Handle dapl = dataset_access();
+  const hid_t id = H5Dopen2(file_, path.c_str(), dapl.get());
+  require(id >= 0, path_, "no dataset " + path + " to continue");
+  datasets_.push_back({id, 0, columns, path});
+  Handle space(H5Dget_space(id), H5Sclose);
+  hsize_t dims[2] = {0, 0};
+  const int rank = H5Sget_simple_extent_ndims(space.get());
+  require(rank == (columns ? 2 : 1) && H5Sget_simple_extent_dims(space.get(), dims, nullptr) >= 0 &&
+              dims[1] == (columns ? columns : 0),
+          path_, path + " is not of the shape it was written with");
+  datasets_.back().rows = dims[0];
+  return static_cast<int>(datasets_.size() - 1);
+}
+
+std::uint64_t Writer::rows(int index) const {
+  return datasets_.at(static_cast<std::size_t>(index)).rows;
+}
+
+void Writer::truncate(int index, std::uint64_t rows) {
+  Dataset& d = datasets_.at(static_cast<std::size_t>(index));
+  require(rows <= d.rows, path_,
+          d.path + " has " + std::to_string(d.rows) + " rows, fewer than " + std::to_string(rows));
+  const hsize_t extent[2] = {rows, d.columns};
+  require(H5Dset_extent(d.id, extent) >= 0, path_, "cannot cut " + d.path + " back");
+  d.rows = rows;
+}
+
+void Writer::flush() {
+  void* handle = nullptr;
+  bool ok = H5Fflush(file_, H5F_SCOPE_GLOBAL) >= 0;
+  // HDF5 hands its writes to the kernel; fsync puts them on the disk (the sec2 driver's
+  // handle is the file descriptor).
+  ok = ok && H5Fget_vfd_handle(file_, H5P_DEFAULT, &handle) >= 0 && handle &&
+       ::fsync(*static_cast<int*>(handle)) == 0;
+  require(ok, path_, "flushing the HDF5 file failed (disk full?)");
 }
 
 void Writer::append(int index, const double* values, std::uint64_t rows) {
@@ -143,10 +219,14 @@ void write_attr(hid_t file, const std::string& path, const std::string& object,
 }  // namespace
 
 void Writer::attr(const std::string& object, const std::string& name, const std::string& value) {
-  Handle type = string_type();
+  // Fixed length, in the attribute's own object header: a variable-length string lives in
+  // the global heap, which has no checksum, and libhdf5 1.10.8 segfaults (H5HG_read) on a
+  // damaged one; the object header's checksum turns damage into an error instead. HDF5 wants
+  // at least one byte: the empty string is one NUL of padding.
+  const std::string text = value.empty() ? std::string(1, '\0') : value;
+  Handle type = string_type(text.size());
   Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-  const char* text = value.c_str();
-  write_attr(file_, path_, object, name, type.get(), type.get(), space.get(), &text);
+  write_attr(file_, path_, object, name, type.get(), type.get(), space.get(), text.data());
 }
 
 void Writer::attr(const std::string& object, const std::string& name, double value) {
@@ -323,7 +403,7 @@ std::string Reader::string_attr(const std::string& object, const std::string& na
   require(H5Tget_class(a.type.get()) == H5T_STRING && points_of(a, path_, what) == 1, path_,
           what + ": not a text");
   if (H5Tis_variable_str(a.type.get()) > 0) {
-    Handle memory = string_type();
+    Handle memory = string_type(0);
     char* text = nullptr;
     require(H5Aread(a.attr.get(), memory.get(), &text) >= 0, path_,
             "reading the " + what + " failed");

@@ -132,6 +132,123 @@ def test_sigusr1_writes_a_checkpoint_and_the_run_goes_on(tmp_path):
     assert (work / "out.csv").read_bytes() == csv and out == summary
 
 
+def h5_objects(f):
+    """Every group and dataset of an open h5py file by name, the root as ""."""
+    found = {"": f}
+
+    def add(name, obj):  # visititems stops at the first callback that returns a value
+        found[name] = obj
+
+    f.visititems(add)
+    return found
+
+
+def assert_same_h5(resumed, alone):
+    """The datasets and attributes of two HDF5 files are equal value for value and bit for
+    bit (types, shapes, chunk shapes and filters too); returns how many were compared. The
+    files' bytes differ: HDF5 places what a reopened file adds from its end of file."""
+    h5py = pytest.importorskip("h5py")
+    import numpy as np
+
+    compared = 0
+    with h5py.File(resumed, "r") as a, h5py.File(alone, "r") as b:
+        objects_a, objects_b = h5_objects(a), h5_objects(b)
+        assert sorted(objects_a) == sorted(objects_b)
+        for name, obj in objects_a.items():
+            other = objects_b[name]
+            assert sorted(obj.attrs) == sorted(other.attrs), name
+            for key in obj.attrs:
+                x, y = np.asarray(obj.attrs[key]), np.asarray(other.attrs[key])
+                assert x.dtype == y.dtype and x.tobytes() == y.tobytes(), (name, key)
+                compared += 1
+            if isinstance(obj, h5py.Dataset):
+                assert (obj.dtype, obj.shape, obj.chunks, obj.compression) == (
+                    other.dtype, other.shape, other.chunks, other.compression), name
+                assert obj[()].tobytes() == other[()].tobytes(), name
+                compared += 1
+    return compared
+
+
+def assert_h5_holds_the_csv(h5, csv):
+    """The HDF5 file's rows are the CSV's numbers, bit for bit (float() of a shortest
+    round-trip field is the double the program printed)."""
+    h5py = pytest.importorskip("h5py")
+    import numpy as np
+
+    lines = csv.read_text().splitlines()
+    table = np.array([[float(x) for x in line.split(",")] for line in lines[1:]])
+    with h5py.File(h5, "r") as f:
+        n = f["chain/phi"].shape[1]
+        assert table.shape == (f["observables/tau"].shape[0], 5 + 2 * n)
+        for k, column in enumerate(["tau", "f", "energy", "kinetic", "potential"]):
+            assert f["observables"][column][()].tobytes() == table[:, k].tobytes(), column
+        assert f["chain/phi"][()].tobytes() == np.ascontiguousarray(table[:, 5 : 5 + n]).tobytes()
+        assert f["chain/psi"][()].tobytes() == np.ascontiguousarray(table[:, 5 + n :]).tobytes()
+
+
+@pytest.mark.parametrize("seed,compress", [(1, []), (2, ["--h5-compress", "3"])])
+def test_sigterm_then_resume_with_h5_equals_the_run_left_alone(tmp_path, seed, compress):
+    # SMALL plans 6001 rows in bands of 23 (h5_run_file.cpp's chunk_shape): a stop lands
+    # inside a band, whose rows the checkpoint flushes and the resume continues (deflated, a
+    # completed chunk changes size and moves).
+    pytest.importorskip("h5py")
+    scene = SCENES / "anomalous_breaking.toml"
+    alone = tmp_path / "alone"
+    alone.mkdir()
+    done = run([scene, *SMALL, "--csv", "out.csv", "--h5", "out.h5", *compress], alone)
+    assert done.returncode == 0, done.stderr
+    partial = []
+
+    def stop(p, work):
+        time.sleep(random.Random(seed).uniform(0.3, 1.0))  # SMALL takes about 2 s
+        p.send_signal(signal.SIGTERM)
+        p.wait()
+        partial.append((work / ".out.h5.resume").exists())
+
+    work, out, status = stop_and_resume(tmp_path, f"h5_{seed}", scene, SMALL, stop,
+                                        ["--h5", "out.h5", *compress])
+    assert status == 143 and partial == [True], "the run ended before the signal"
+    assert out == done.stdout and json.loads(out)["h5"] == "out.h5"
+    assert (work / "out.csv").read_bytes() == (alone / "out.csv").read_bytes()
+    assert not (work / ".out.h5.resume").exists()
+    # 53: 45 attributes (the root's 26, 2 of each dataset, 3 of /h5md and its creator) and 8
+    # datasets (5 series, phi, and psi and psi_dot with --psi).
+    assert assert_same_h5(work / "out.h5", alone / "out.h5") == 53
+    assert_h5_holds_the_csv(work / "out.h5", work / "out.csv")
+
+
+def test_resume_refuses_a_missing_partial_h5_file(tmp_path):
+    scene = SCENES / "anomalous_breaking.toml"
+    work = checkpointed(tmp_path, scene, outputs=("--csv", "out.csv", "--h5", "out.h5"))
+    (work / ".out.h5.resume").unlink()
+    refused_with = run(["--resume", "run.ckpt"], work)
+    assert refused_with.returncode != 0
+    assert ".out.h5.resume" in refused_with.stderr and "missing" in refused_with.stderr
+
+
+def test_an_h5_file_killed_after_its_checkpoint_is_refused_not_patched(tmp_path):
+    # HDF5 (without SWMR) keeps no file whole across a kill, and marks it open for writing
+    # until it is closed: after SIGKILL the resume refuses it (exit 2) and says what to do.
+    scene = SCENES / "anomalous_breaking.toml"
+    work = tmp_path / "killed"
+    work.mkdir()
+    p = subprocess.Popen([EXE, "run", str(scene), *SMALL, "--csv", "out.csv", "--h5", "out.h5",
+                          "--checkpoint", "run.ckpt", "--checkpoint-every", "0.1", "-q"],
+                         cwd=work, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    for _ in range(200):
+        if (work / "run.ckpt").exists():
+            break
+        time.sleep(0.02)
+    time.sleep(0.2)
+    p.send_signal(signal.SIGKILL)
+    p.communicate()
+    assert p.returncode == -signal.SIGKILL and (work / ".out.h5.resume").exists()
+    done = run(["--resume", "run.ckpt"], work)
+    assert done.returncode == 2, done.stderr
+    assert ".out.h5.resume" in done.stderr and "was not closed" in done.stderr
+    assert "run again from the start" in done.stderr and not (work / "out.h5").exists()
+
+
 def checkpointed(tmp_path, scene_path, outputs=("--csv", "out.csv")):
     """A run stopped by SIGTERM with its checkpoint: the folder."""
     work = tmp_path / "stopped"
@@ -218,3 +335,18 @@ def test_a_checkpoint_that_cannot_be_written_keeps_the_previous_one(tmp_path):
     expected = json.loads(summary)
     del expected["csv"]
     assert json.loads(done.stdout) == expected
+
+
+def test_submit_slurm_passes_h5_to_the_job(tmp_path):
+    # The job's start command carries --h5 (absolute) and --h5-compress, so the HDF5 file is
+    # written and resumed with the CSV through the requeues; a stand-in sbatch takes the script.
+    bin_dir = tmp_path / "bin"
+    bin_dir.mkdir()
+    (bin_dir / "sbatch").write_text("#!/bin/sh\necho 42\n")
+    (bin_dir / "sbatch").chmod(0o755)
+    env = dict(os.environ, PATH=f"{bin_dir}:{os.environ['PATH']}")
+    done = run([SCENES / "anomalous_breaking.toml", "--csv", "out.csv", "--h5", "out.h5",
+                "--h5-compress", "2", "--submit", "slurm"], tmp_path, env=env)
+    assert done.returncode == 0, done.stderr
+    script = (tmp_path / "out.sbatch").read_text()
+    assert f"--h5 {tmp_path / 'out.h5'} --h5-compress 2" in script, script

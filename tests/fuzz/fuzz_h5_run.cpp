@@ -1,9 +1,10 @@
 // chainbreak.load's reader (app/h5_run_file.h): any bytes as an HDF5 file. Only h5::H5Error
 // may escape (a file that is not HDF5, not a run, or damaged); a run that loads has datasets
 // of the sizes its attributes say. The HDF5 library parses the file's structure itself, so a
-// crash inside libhdf5 is a finding to report upstream, not a bug of ours: 1.10.8 segfaults in
-// H5HG_read on a damaged variable-length string (the seed with one byte flipped), which is why
-// tests/ci/sanitizers.sh does not run this harness.
+// crash inside libhdf5 is a finding to report upstream, and to avoid by how we write: 1.10.8
+// segfaulted in H5HG_read on a damaged variable-length string, so our strings are fixed
+// length, in checksummed object headers (h5/h5_file.cpp). The seed: make_seeds.py with
+// CHAINBREAK_EXE set.
 #include <unistd.h>
 
 #include <cstdio>

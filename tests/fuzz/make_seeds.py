@@ -159,3 +159,69 @@ put("fuzz_merge", shard_text(THRESHOLD, 1, 3, 0, 3, threshold_rows(0, 3))
     "merge_float_memory")
 put("fuzz_merge", shard_text(THRESHOLD, 1, 3, 0, 3, threshold_rows(0, 3))
     .replace('"first_point": 0', '"first_point": -1'), "merge_negative_point")
+
+# Checkpoints (checkpoint/checkpoint.cpp's format CBCKPT02, encoded here field by field): a
+# CSV run of 4 beads after two impulses with a broken spring, and a run that also writes an
+# HDF5 file (the command's h5 and h5_compress, and the file's rows after the CSV's bytes).
+import struct  # noqa: E402
+
+
+def fnv1a(data):
+    h = 1469598103934665603
+    for b in data:
+        h = ((h ^ b) * 1099511628211) % (1 << 64)
+    return h
+
+
+def checkpoint(command, step, psi, vel, broken, breaks, csv_bytes, h5_rows):
+    def text(s):
+        s = s.encode()
+        return struct.pack("<Q", len(s)) + s
+
+    def doubles(v):
+        return struct.pack("<Q", len(v)) + struct.pack(f"<{len(v)}d", *v)
+
+    p = text("0.1") + text("237fc1d61e60c8ef") + struct.pack("<Q", len(command))
+    p += b"".join(text(a) for a in command)
+    p += struct.pack("<qdddd", step, step * 0.01, 0.25, 0.0, 0.125)
+    p += struct.pack("<QQ", 0, len(broken)) + b"".join(struct.pack("<q", j) for j in broken)
+    p += struct.pack("<Q", len(breaks))
+    p += b"".join(struct.pack("<qdq", s, t, k) for s, t, k in breaks)
+    p += doubles(psi) + doubles(vel) + struct.pack("<QQQQ", 2, 0, csv_bytes, h5_rows)
+    return b"CBCKPT02" + struct.pack("<QQ", len(p), fnv1a(p)) + p
+
+
+def run_command(scene, sets, extra):
+    c = ["scene", scene]
+    for s in sets:
+        c += ["set", s]
+    return c + ["solver", "rk4", "csv", "out.csv", "every", "1", "psi", "1", *extra,
+                "threads", "1", "checkpoint", "run.ckpt", "checkpoint_every", "600"]
+
+
+put("fuzz_checkpoint", checkpoint(
+    run_command("scenes/two_impulses.toml",
+                ["chain.beads=4", "integrator.t_end=10000000", "chain.threshold=0.5"],
+                ["h5", "", "h5_compress", "0"]),
+    250, [0.5, 0.25, -0.125, 1.0], [0.0, -1.5, 2.0, 0.75], [3], [(3, 2.4375, 244)], 9876, 0),
+    "impulses_4_beads.ckpt")
+put("fuzz_checkpoint", checkpoint(
+    run_command("scenes/anomalous_breaking.toml", ["chain.beads=4", "integrator.t_end=2"],
+                ["h5", "out.h5", "h5_compress", "3"]),
+    150, [0.02, 0.015, 0.01, 0.005], [0.25, 0.5, 0.75, 1.0], [], [], 4321, 151),
+    "ramp_4_beads_h5.ckpt")
+
+# HDF5 run files (fuzz_h5_run), written by the program when CHAINBREAK_EXE names it (the
+# committed seed is the file of the version that wrote it): 3 beads with --psi, 5 rows.
+import os  # noqa: E402
+import subprocess  # noqa: E402
+import tempfile  # noqa: E402
+
+if os.environ.get("CHAINBREAK_EXE"):
+    with tempfile.TemporaryDirectory() as scratch:
+        out = pathlib.Path(scratch) / "run.h5"
+        subprocess.run([os.environ["CHAINBREAK_EXE"], "run", "scenes/anomalous_breaking.toml",
+                        "--set", "chain.beads=3", "--set", "integrator.t_end=2", "--every", "50",
+                        "--psi", "--h5", str(out), "-q"], cwd=ROOT, check=True,
+                       stdout=subprocess.DEVNULL)
+        put("fuzz_h5_run", out.read_bytes(), "ramp_3_beads.h5")
