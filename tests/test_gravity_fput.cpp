@@ -228,14 +228,14 @@ TEST_CASE("a hanging anharmonic chain falls freely once its top spring breaks", 
 }
 
 TEST_CASE("a hanging anharmonic chain resumes from its state bit for bit", "[fput][gravity]") {
-  // Checkpoints (issue #26) save state() and restore() loads it: in psi for this chain, the
-  // frame it is integrated in, so nothing is shifted on the way.
+  // Checkpoints (issue #26) save integrated_state(): psi itself for this chain, the frame it
+  // is integrated in.
   const cb::ChainParams p = hanging_fput(20, 0.01, 0.3, 0.5, 0.0, 1.0);
   const cb::Forcing pull = cb::make_forcing(ramp(0.02));
   cb::Integrator first(p, pull, {0.01});
   REQUIRE(first.advance_to(5000));
   cb::Integrator resumed(p, pull, {0.01});
-  resumed.restore(first.state(), first.cursor());
+  resumed.restore(first.integrated_state(), first.cursor());
   REQUIRE(first.advance_to(12000));
   REQUIRE(resumed.advance_to(12000));
   CHECK(!first.state().breaks.empty());

@@ -134,7 +134,7 @@ void Checkpointer::see(const Integrator& sim, bool stopped) {
   c.version = CHAINBREAK_VERSION;
   c.scene_hash = scene_hash_;
   c.command = command_;
-  c.state = sim.state();
+  c.state = sim.integrated_state();  // u for a hanging chain (Integrator::restore)
   const Integrator::Cursor cursor = sim.cursor();
   c.next_kick = cursor.next_kick;
   c.next_breakpoint = cursor.next_breakpoint;

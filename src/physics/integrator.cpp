@@ -816,12 +816,14 @@ Integrator::Cursor Integrator::cursor() const {
   return {impl_->next_kick, impl_->next_breakpoint};
 }
 
-void Integrator::restore(const ChainState& state, const Cursor& cursor) {
-  assert(state.psi.size() == state_.psi.size() && state.vel.size() == state_.vel.size());
+void Integrator::restore(const ChainState& integrated, const Cursor& cursor) {
+  assert(integrated.psi.size() == state_.psi.size() &&
+         integrated.vel.size() == state_.vel.size());
   // Copied into the arrays made at construction (zero_array's pages), not swapped for others.
-  std::copy(state.psi.begin(), state.psi.end(), state_.psi.begin());
-  std::copy(state.vel.begin(), state.vel.end(), state_.vel.begin());
-  copy_all_but_arrays(state, state_);
+  std::copy(integrated.psi.begin(), integrated.psi.end(), state_.psi.begin());
+  std::copy(integrated.vel.begin(), integrated.vel.end(), state_.vel.begin());
+  copy_all_but_arrays(integrated, state_);
+  shown_step_ = -1;  // a hanging chain's psi is made again
   impl_->next_kick = static_cast<std::size_t>(cursor.next_kick);
   impl_->next_breakpoint = static_cast<std::size_t>(cursor.next_breakpoint);
   error_.clear();

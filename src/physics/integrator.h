@@ -131,7 +131,12 @@ class Integrator {
     std::uint64_t next_kick = 0, next_breakpoint = 0;
   };
   Cursor cursor() const;
-  void restore(const ChainState& state, const Cursor& cursor);
+  // The state as the kernels hold it: state() itself, except for a hanging chain of linear
+  // springs, whose psi here is u = psi - psi_eq. A checkpoint saves this, not state(): u + psi_eq
+  // rounds, and u could not be recovered from it bit for bit.
+  const ChainState& integrated_state() const { return state_; }
+  // Continues from integrated_state() and cursor() as saved.
+  void restore(const ChainState& integrated, const Cursor& cursor);
 
   // Ensembles over thresholds (physics/threshold_ensemble.h): once set, no spring breaks; each
   // interval [ta, tb] whose springs may reach their bounds (the chain's own: the loosest of the
