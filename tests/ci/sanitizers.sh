@@ -147,7 +147,7 @@ tsan() {
 # one segfaulted in H5HG_read; src/h5/h5_file.cpp). libhdf5's own leaks on damaged object
 # headers are suppressed by library name (tests/ci/lsan.supp).
 HARNESSES=(fuzz_scene fuzz_set fuzz_table_csv fuzz_expr fuzz_script fuzz_options fuzz_merge
-           fuzz_checkpoint fuzz_h5_run)
+           fuzz_checkpoint fuzz_h5_run fuzz_expression)
 
 # One harness for FUZZ_SECONDS from its committed seeds; new inputs go to a scratch folder.
 # A finding (crash, sanitizer report, FUZZ_CHECK, a 10 s hang, 2 GB) stops it with status
@@ -167,7 +167,7 @@ fuzz() {
   asan_env
   local work status=0
   work=$(mktemp -d)
-  # Two harnesses at a time, one per core: 9 harnesses x 60 s take 5 minutes, not 9 (each
+  # Two harnesses at a time, one per core: 10 harnesses x 60 s take 5 minutes, not 10 (each
   # is single-threaded, and a harness's exec/s does not depend on the other one).
   local i
   for ((i = 0; i < ${#HARNESSES[@]}; i += 2)); do
