@@ -2,6 +2,7 @@
 // stencil (stencil.inc's Anharmonic policies) on every kernel path, checked against closed forms
 // (the static extension), RK4's own order, the energy books, and an independent integrator
 // (scipy's DOP853, tests/fput_dop853_reference.py).
+#include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstring>
@@ -26,6 +27,7 @@
 namespace {
 
 using cb::test::ramp_drive;
+using cb::test::state_bytes;
 
 cb::ChainParams fput_chain(int beads, double a, double b, double gamma = 0.0,
                            double threshold = std::numeric_limits<double>::infinity()) {
@@ -33,22 +35,6 @@ cb::ChainParams fput_chain(int beads, double a, double b, double gamma = 0.0,
   p.fput_alpha = a;
   p.fput_beta = b;
   return p;
-}
-
-bool same_bytes(const cb::ChainState& x, const cb::ChainState& y) {
-  auto eq = [](const std::vector<double>& u, const std::vector<double>& v) {
-    return u.size() == v.size() && std::memcmp(u.data(), v.data(), u.size() * sizeof(double)) == 0;
-  };
-  if (!eq(x.psi, y.psi) || !eq(x.vel, y.vel) || x.broken != y.broken) return false;
-  if (x.breaks.size() != y.breaks.size()) return false;
-  for (std::size_t i = 0; i < x.breaks.size(); ++i)
-    if (x.breaks[i].spring != y.breaks[i].spring ||
-        std::memcmp(&x.breaks[i].tau, &y.breaks[i].tau, sizeof(double)) != 0)
-      return false;
-  for (auto [u, v] :
-       {std::pair{x.work, y.work}, {x.dissipated, y.dissipated}, {x.break_loss, y.break_loss}})
-    if (std::memcmp(&u, &v, sizeof u) != 0) return false;
-  return true;
 }
 
 // The kernel paths an Integrator can take: the one-chain wavefront (small, one thread), the
@@ -109,7 +95,7 @@ TEST_CASE("fput: a = b = 0 through the Anharmonic policy gives the harmonic chai
           const cb::ChainState anh =
               run(c.chain, c.drive, 0.01, c.steps, simd, path, true, per_bead);
           CHECK(!harmonic.breaks.empty());
-          CHECK(same_bytes(harmonic, anh));
+          CHECK(state_bytes(harmonic) == state_bytes(anh));
         }
     }
 }
@@ -126,7 +112,7 @@ TEST_CASE("fput: every kernel path and SIMD path gives the same bytes for an anh
     if (!cb::simd_supported(simd)) continue;
     for (const Path& path : kPaths) {
       INFO(cb::simd_name(simd) << ", " << path.name);
-      CHECK(same_bytes(ref, run(p, step, 0.01, 500, simd, path, false)));
+      CHECK(state_bytes(ref) == state_bytes(run(p, step, 0.01, 500, simd, path, false)));
     }
   }
   // A small chain (the one-chain wavefront kernel) against the tiled one.
@@ -137,7 +123,8 @@ TEST_CASE("fput: every kernel path and SIMD path gives the same bytes for an anh
   for (cb::SimdPath simd : {cb::SimdPath::Avx2, cb::SimdPath::Avx512}) {
     if (!cb::simd_supported(simd)) continue;
     INFO(cb::simd_name(simd));
-    CHECK(same_bytes(tiled, run(small, ramp_drive(0.05), 0.01, 6000, simd, kPaths[0], false)));
+    CHECK(state_bytes(tiled) ==
+          state_bytes(run(small, ramp_drive(0.05), 0.01, 6000, simd, kPaths[0], false)));
   }
 }
 
@@ -164,8 +151,9 @@ TEST_CASE("fput: a damped chain under a constant pull settles where T(phi_j) = f
   }
 }
 
-TEST_CASE("fput: RK4 is fourth order on an anharmonic ramp", "[fput]") {
-  const cb::ChainParams p = fput_chain(8, 0.3, 0.5);
+// RK4's errors in phi at tau = 20 under a ramp of 0.05, at dt = 0.04, 0.08 and 0.16, against
+// dt = 0.0025: fourth order means ratios of 16 between neighbours.
+std::array<double, 3> rk4_errors_on_a_ramp(const cb::ChainParams& p) {
   const double t_end = 20.0;
   auto phi_at = [&](double dt) {
     cb::Integrator sim(p, cb::make_forcing(ramp_drive(0.05)), {dt});
@@ -182,6 +170,12 @@ TEST_CASE("fput: RK4 is fourth order on an anharmonic ramp", "[fput]") {
     return e;
   };
   const double e1 = error(0.04), e2 = error(0.08), e4 = error(0.16);
+  return {e1, e2, e4};
+}
+
+TEST_CASE("fput: RK4 is fourth order on an anharmonic ramp", "[fput]") {
+  const cb::ChainParams p = fput_chain(8, 0.3, 0.5);
+  const auto [e1, e2, e4] = rk4_errors_on_a_ramp(p);
   INFO("errors " << e1 << " " << e2 << " " << e4);
   CHECK(e2 / e1 == Approx(16.0).margin(1.5));
   CHECK(e4 / e2 == Approx(16.0).margin(1.5));
@@ -194,22 +188,7 @@ TEST_CASE("fput: RK4 is fourth order on a hanging anharmonic ramp", "[fput][grav
   // 3 b: the tension grows everywhere), from its equilibrium (phi_eq,1 ~ 0.16).
   cb::ChainParams p = fput_chain(8, -0.3, 0.5);
   p.gravity = 0.02;
-  const double t_end = 20.0;
-  auto phi_at = [&](double dt) {
-    cb::Integrator sim(p, cb::make_forcing(ramp_drive(0.05)), {dt});
-    REQUIRE(sim.advance_to(static_cast<std::int64_t>(std::llround(t_end / dt))));
-    std::vector<double> phi;
-    for (int j = 1; j <= p.beads; ++j) phi.push_back(cb::extension(sim.state(), j));
-    return phi;
-  };
-  const std::vector<double> ref = phi_at(0.0025);
-  auto error = [&](double dt) {
-    const std::vector<double> phi = phi_at(dt);
-    double e = 0.0;
-    for (std::size_t j = 0; j < phi.size(); ++j) e = std::max(e, std::abs(phi[j] - ref[j]));
-    return e;
-  };
-  const double e1 = error(0.04), e2 = error(0.08), e4 = error(0.16);
+  const auto [e1, e2, e4] = rk4_errors_on_a_ramp(p);
   INFO("errors " << e1 << " " << e2 << " " << e4);
   CHECK(e2 / e1 == Approx(16.0).margin(1.5));
   CHECK(e4 / e2 == Approx(16.0).margin(1.5));

@@ -19,26 +19,20 @@
 #include "physics/energy.h"
 #include "physics/integrator.h"
 #include "physics/simd.h"
+#include "support/chain_test_support.h"
 
 namespace {
 
+using cb::test::ramp_drive;
+using cb::test::state_bytes;
+
 cb::ChainParams hanging_fput(int beads, double gravity, double a, double b, double gamma = 0.0,
                              double threshold = std::numeric_limits<double>::infinity()) {
-  cb::ChainParams p;
-  p.beads = beads;
+  cb::ChainParams p = cb::test::chain_of(beads, gamma, threshold, cb::BreakMode::Abs, false);
   p.gravity = gravity;
   p.fput_alpha = a;
   p.fput_beta = b;
-  p.gamma = gamma;
-  p.threshold = threshold;
   return p;
-}
-
-cb::DriveDesc ramp(double beta) {
-  cb::DriveDesc d;
-  d.type = cb::DriveType::Ramp;
-  d.beta = beta;
-  return d;
 }
 
 cb::DriveDesc no_pull() {
@@ -46,22 +40,6 @@ cb::DriveDesc no_pull() {
   d.type = cb::DriveType::Step;
   d.amplitude = 0.0;
   return d;
-}
-
-bool same_bytes(const cb::ChainState& x, const cb::ChainState& y) {
-  auto eq = [](const std::vector<double>& u, const std::vector<double>& v) {
-    return u.size() == v.size() && std::memcmp(u.data(), v.data(), u.size() * sizeof(double)) == 0;
-  };
-  if (!eq(x.psi, y.psi) || !eq(x.vel, y.vel) || x.broken != y.broken) return false;
-  if (x.breaks.size() != y.breaks.size()) return false;
-  for (std::size_t i = 0; i < x.breaks.size(); ++i)
-    if (x.breaks[i].spring != y.breaks[i].spring ||
-        std::memcmp(&x.breaks[i].tau, &y.breaks[i].tau, sizeof(double)) != 0)
-      return false;
-  for (auto [u, v] :
-       {std::pair{x.work, y.work}, {x.dissipated, y.dissipated}, {x.break_loss, y.break_loss}})
-    if (std::memcmp(&u, &v, sizeof u) != 0) return false;
-  return true;
 }
 
 }  // namespace
@@ -146,7 +124,7 @@ TEST_CASE("a hanging anharmonic chain gives the same bytes on every path",
   step.type = cb::DriveType::Step;
   step.amplitude = 0.9;  // T(phi) = 0.9 at phi ~ 0.82: spring N breaks at once
   // A breaking ramp on a small chain, and a chain of several tiles under a step with friction.
-  const Case cases[] = {{hanging_fput(30, 0.01, 0.3, 0.5, 0.0, 1.0), ramp(0.02), 8000},
+  const Case cases[] = {{hanging_fput(30, 0.01, 0.3, 0.5, 0.0, 1.0), ramp_drive(0.02), 8000},
                         {hanging_fput(3001, 1e-4, -0.3, 0.5, 0.02, 0.8), step, 400}};
   for (const Case& c : cases) {
     auto run = [&](cb::SimdPath simd, const Path& path) {
@@ -166,7 +144,7 @@ TEST_CASE("a hanging anharmonic chain gives the same bytes on every path",
       if (!cb::simd_supported(simd)) continue;
       for (const Path& path : kPaths) {
         INFO(c.chain.beads << " beads, " << cb::simd_name(simd) << ", " << path.name);
-        CHECK(same_bytes(ref, run(simd, path)));
+        CHECK(state_bytes(ref) == state_bytes(run(simd, path)));
       }
     }
   }
@@ -179,7 +157,7 @@ TEST_CASE("a hanging anharmonic chain's energy books include the weight's potent
   for (double gamma : {0.0, 0.02})
     for (double threshold : {std::numeric_limits<double>::infinity(), 1.0}) {
       const cb::ChainParams p = hanging_fput(20, 0.01, 0.3, 0.5, gamma, threshold);
-      cb::Integrator sim(p, cb::make_forcing(ramp(0.02)), {0.01});
+      cb::Integrator sim(p, cb::make_forcing(ramp_drive(0.02)), {0.01});
       REQUIRE(sim.advance_to(10000));  // tau = 100
       const cb::EnergyBooks books = cb::energy_books(sim.state(), p);
       INFO("gamma " << gamma << ", threshold " << threshold << ": balance " << books.balance_error
@@ -201,7 +179,7 @@ TEST_CASE("a hanging anharmonic chain falls freely once its top spring breaks", 
   // degree 1 in tau) but for rounding.
   const double beta = 0.005, gravity = 0.01;
   const cb::ChainParams p = hanging_fput(30, gravity, 0.0, 0.5, 0.0, 1.0);
-  cb::Integrator sim(p, cb::make_forcing(ramp(beta)), {0.01});
+  cb::Integrator sim(p, cb::make_forcing(ramp_drive(beta)), {0.01});
   while (sim.state().breaks.empty()) REQUIRE(sim.step());
   REQUIRE(sim.state().breaks.front().spring == 1);
   const double tau_break = sim.state().breaks.front().tau;
@@ -221,7 +199,7 @@ TEST_CASE("a hanging anharmonic chain falls freely once its top spring breaks", 
                    << ")");
   CHECK(std::abs(p1 - want) <= 1e-11 * std::abs(want));
   // The break's time converges with dt (the crossing located by Hermite interpolation).
-  cb::Integrator fine(p, cb::make_forcing(ramp(beta)), {0.0025});
+  cb::Integrator fine(p, cb::make_forcing(ramp_drive(beta)), {0.0025});
   while (fine.state().breaks.empty()) REQUIRE(fine.step());
   CHECK(fine.state().breaks.front().spring == 1);
   CHECK(std::abs(fine.state().breaks.front().tau - tau_break) < 1e-6);
@@ -231,7 +209,7 @@ TEST_CASE("a hanging anharmonic chain resumes from its state bit for bit", "[fpu
   // Checkpoints (issue #26) save integrated_state(): psi itself for this chain, the frame it
   // is integrated in.
   const cb::ChainParams p = hanging_fput(20, 0.01, 0.3, 0.5, 0.0, 1.0);
-  const cb::Forcing pull = cb::make_forcing(ramp(0.02));
+  const cb::Forcing pull = cb::make_forcing(ramp_drive(0.02));
   cb::Integrator first(p, pull, {0.01});
   REQUIRE(first.advance_to(5000));
   cb::Integrator resumed(p, pull, {0.01});
@@ -239,5 +217,5 @@ TEST_CASE("a hanging anharmonic chain resumes from its state bit for bit", "[fpu
   REQUIRE(first.advance_to(12000));
   REQUIRE(resumed.advance_to(12000));
   CHECK(!first.state().breaks.empty());
-  CHECK(same_bytes(first.state(), resumed.state()));
+  CHECK(state_bytes(first.state()) == state_bytes(resumed.state()));
 }
