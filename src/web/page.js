@@ -18,6 +18,7 @@
   const physicsBudgetMs = 12;
   let stepsPerMs = 50;  // measured as the run goes
   let behind = 1;       // achieved / requested speed over the last frame
+  let hasGl = false;    // whether the canvas got its WebGL2 context
 
   const scenesDir = "/scenes";
   // The paper's three regimes and the one-body pull-or-jerk first, then the rest by name.
@@ -75,7 +76,12 @@
   function loadText(text, path, overrides) {
     const lines = (overrides || []).map(([k, v]) => k + "=" + v).join("\n");
     const error = page.load(text, path, lines);
-    if (!error) restarted();
+    if (!error) {
+      // The scene's own view (a hanging chain hangs, issue #22); a field's edit keeps the
+      // reader's choice, only a newly loaded scene resets it.
+      $("view").value = page.scene().view || "longitudinal";
+      restarted();
+    }
     return error;
   }
   function loadPreset(id, overrides) {
@@ -209,9 +215,13 @@
   }
 
   function draw() {
-    const error = page.draw(canvas.width, canvas.height, effectiveTheme(), $("view").value,
-                            $("plots").checked);
-    if (error) fail(error);
+    // Without WebGL2 the physics still runs and the status, plots' numbers and announcements
+    // follow it; initGl's message (why, and which browsers to try) stays in place.
+    if (hasGl) {
+      const error = page.draw(canvas.width, canvas.height, effectiveTheme(), $("view").value,
+                              $("plots").checked);
+      if (error) fail(error);
+    }
     $("status").textContent = tauText(page.tau(), page.scene()) +
       (page.atEnd() ? " (end of the run)" : "") +
       (playing && behind < 0.95 ? " (behind: ×" + behind.toFixed(2) + " of the speed asked for)" : "");
@@ -404,6 +414,7 @@
     Module = m;
     page = new m.Page();
     const glError = page.initGl();
+    hasGl = !glError;
     if (glError) fail(glError);
     fillPresets();
     wire();

@@ -144,18 +144,18 @@ const WebBreakMap& WebSession::break_map() const {
   WebBreakMap map;
   const ChainParams& c = scene_.chain;
   // The map is the paper's for a ramp on the uniform chain (equal beads, springs and
-  // thresholds) under the abs rule; a long chain's
-  // exact first breaks would hold the page too long.
+  // thresholds; linear springs; no weight) under the abs rule, drawn for no other chain; a
+  // long chain's exact first breaks would hold the page too long.
   if (scene_.drive.type == DriveType::Ramp && c.breakable() && c.uniform_thresholds() &&
-      c.uniform_dynamics() && c.break_on == BreakMode::Abs && !c.pull_string &&
-      c.beads <= kMapMaxBeads && scene_.drive.beta > 0) {
+      c.uniform_dynamics() && !c.anharmonic() && !c.hanging() && c.break_on == BreakMode::Abs &&
+      !c.pull_string && c.beads <= kMapMaxBeads && scene_.drive.beta > 0) {
     map.beads = c.beads;
     map.current = c.threshold / scene_.drive.beta;
     // At most kMapMaxZetaPerBead N: an exact first break searches up to tau = 4 zeta_c + 8N,
     // so a threshold of 1e9 would hold the page for hours; a current zeta_c off the map is
     // simply not marked.
-    const double hi = std::min(std::max(1.5 * map.current, 6.0 * c.beads),
-                               kMapMaxZetaPerBead * c.beads);
+    const double hi =
+        std::min(std::max(1.5 * map.current, 6.0 * c.beads), kMapMaxZetaPerBead * c.beads);
     for (int i = 1; i <= kMapSamples; ++i) {
       const double zeta = hi * i / kMapSamples;
       const FirstBreak b = ramp_first_break(c.beads, c.gamma, zeta);
