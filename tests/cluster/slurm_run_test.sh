@@ -31,6 +31,10 @@ run=("$scenes/anomalous_breaking.toml" --set chain.beads=8000 --set integrator.t
 "$cb" run "${run[@]}" --quiet --csv "$tmp/out/local.csv" --h5 "$tmp/out/local.h5" >"$tmp/local.json"
 
 t0=$(date +%s.%N)
+# The files exist before the background job opens them: the loop below may read first (a
+# loaded machine's race, seen once in CI).
+: >"$tmp/submit.out"
+: >"$tmp/submit.err"
 "$cb" run "${run[@]}" --csv "$tmp/out/long.csv" --h5 "$tmp/out/long.h5" --checkpoint-every 0.5 --submit slurm \
   --time 10 --wait >"$tmp/submit.out" 2>"$tmp/submit.err" &
 waiter=$!
