@@ -37,18 +37,8 @@ cb::ChainParams fput_chain(int beads, double a, double b, double gamma = 0.0,
   return p;
 }
 
-// The kernel paths an Integrator can take: the one-chain wavefront (small, one thread), the
-// tiled kernel, temporal blocks (window kernel), threads; each on every SIMD path.
-struct Path {
-  const char* name;
-  bool tiled_only;
-  int block_steps;
-  int threads;
-};
-constexpr Path kPaths[] = {{"default", false, 0, 1},
-                           {"tiled", true, 0, 1},
-                           {"blocks of 8", false, 8, 1},
-                           {"2 threads", false, 0, 2}};
+using Path = cb::test::KernelPath;
+constexpr const auto& kPaths = cb::test::kKernelPaths;
 
 cb::ChainState run(const cb::ChainParams& p, const cb::DriveDesc& d, double dt, std::int64_t steps,
                    cb::SimdPath simd, const Path& path, bool anharmonic_policy,

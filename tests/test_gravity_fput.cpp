@@ -105,16 +105,8 @@ TEST_CASE("a hanging anharmonic chain with no pull stays in its equilibrium", "[
 
 TEST_CASE("a hanging anharmonic chain gives the same bytes on every path",
           "[fput][gravity][simd]") {
-  struct Path {
-    const char* name;
-    bool tiled_only;
-    int block_steps;
-    int threads;
-  };
-  constexpr Path kPaths[] = {{"default", false, 0, 1},
-                             {"tiled", true, 0, 1},
-                             {"blocks of 8", false, 8, 1},
-                             {"2 threads", false, 0, 2}};
+  using Path = cb::test::KernelPath;
+  constexpr const auto& kPaths = cb::test::kKernelPaths;
   struct Case {
     cb::ChainParams chain;
     cb::DriveDesc drive;

@@ -27,6 +27,19 @@ ChainParams chain_of(int beads, double gamma, double threshold, BreakMode mode, 
 // The ramp f = beta tau.
 DriveDesc ramp_drive(double beta);
 
+// The kernel paths an Integrator can take: the one-chain wavefront (small, one thread), the
+// tiled kernel, temporal blocks (window kernel), threads; each test runs them on every SIMD path.
+struct KernelPath {
+  const char* name;
+  bool tiled_only;
+  int block_steps;
+  int threads;
+};
+inline constexpr KernelPath kKernelPaths[] = {{"default", false, 0, 1},
+                                              {"tiled", true, 0, 1},
+                                              {"blocks of 8", false, 8, 1},
+                                              {"2 threads", false, 0, 2}};
+
 // A JSON file of tests/data (CHAINBREAK_TEST_DATA), parsed; the test fails if it cannot be read.
 nlohmann::json load_test_data(const std::string& name);
 
