@@ -118,6 +118,51 @@ TEST_CASE("fput: every kernel path and SIMD path gives the same bytes for an anh
   }
 }
 
+// The bytes of anharmonic chains, frozen: the hashes were made by the build before the wavefront
+// kernels shared each spring's tension between its two beads (ae9fa4a, whose kernels computed
+// both tensions at every bead), so that sharing them, or any later change of the kernels, must
+// keep every bit. Uniform a, b (tiles, temporal blocks, threads: 3001 beads, breaking) and
+// unequal masses and stiffness (the PerBead policy on a small chain and a long one).
+TEST_CASE("fput: every path reproduces the bytes of the build before tensions were shared",
+          "[fput][simd][determinism]") {
+  struct Case {
+    const char* name;
+    cb::ChainParams chain;
+    cb::DriveDesc drive;
+    std::int64_t steps;
+    std::uint64_t hash;
+  };
+  cb::DriveDesc step;
+  step.type = cb::DriveType::Step;
+  step.amplitude = 0.7;
+  auto unequal = [](cb::ChainParams p) {
+    for (int j = 1; j <= p.beads; ++j) {
+      p.mass.push_back(1.0 + 0.5 * std::sin(0.21 * j));
+      p.stiffness.push_back(j % 5 == 2 ? 2.5 : 1.0);
+    }
+    return p;
+  };
+  const Case cases[] = {
+      {"uniform, N = 3001, step", fput_chain(3001, 0.3, 0.5, 0.02, 0.5), step, 500,
+       0x059c0052ae0c570full},
+      {"unequal, N = 30, ramp", unequal(fput_chain(30, -0.2, 0.6, 0.0, 1.2)), ramp_drive(0.05),
+       6000, 0xd96a59cdc2146250ull},
+      {"unequal, N = 2000, step", unequal(fput_chain(2000, 0.3, 0.5, 0.01, 0.6)), step, 400,
+       0x78ac0040a5e6adbdull},
+  };
+  for (const Case& c : cases)
+    for (cb::SimdPath simd : {cb::SimdPath::Sse2, cb::SimdPath::Avx2, cb::SimdPath::Avx512}) {
+      if (!cb::simd_supported(simd)) continue;
+      for (const Path& path : kPaths) {
+        INFO(c.name << ", " << cb::simd_name(simd) << ", " << path.name);
+        const cb::ChainState s = run(c.chain, c.drive, 0.01, c.steps, simd, path, false);
+        CHECK(!s.breaks.empty());
+        INFO("hash 0x" << std::hex << cb::test::state_hash(s));
+        CHECK(cb::test::state_hash(s) == c.hash);
+      }
+    }
+}
+
 TEST_CASE("fput: a damped chain under a constant pull settles where T(phi_j) = f", "[fput]") {
   // Statics: every spring carries the pull f, so phi + a phi^2 + b phi^3 = f for each (the
   // closed form's root, found here by bisection on the monotone tension).

@@ -17,6 +17,7 @@ namespace {
 
 using cb::test::chain_of;
 using cb::test::state_bytes;
+using cb::test::state_hash;
 
 struct Scene {
   const char* name;
@@ -97,20 +98,6 @@ TEST_CASE("CHAINBREAK_SIMD values: auto is the widest, a missing ISA or a typo i
       CHECK_THROWS_AS(cb::simd_from_setting(cb::simd_name(p)), cb::SimdChoiceError);
   }
 }
-
-namespace {
-
-// FNV-1a over the bytes of a final state (psi, vel, broken springs, energy books, breaks).
-std::uint64_t state_hash(const cb::ChainState& s) {
-  std::uint64_t h = 1469598103934665603ull;
-  for (unsigned char c : state_bytes(s)) {
-    h ^= c;
-    h *= 1099511628211ull;
-  }
-  return h;
-}
-
-}  // namespace
 
 // The hashes were made by the integrator as it was before the SIMD paths, the run loop and the
 // small-chain changes (commit f8ecf44, compiled with the project's flags, same scenes): every

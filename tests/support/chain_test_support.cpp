@@ -23,6 +23,15 @@ std::vector<unsigned char> state_bytes(const ChainState& s) {
   return out;
 }
 
+std::uint64_t state_hash(const ChainState& s) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : state_bytes(s)) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
 std::vector<SimdPath> supported_paths() {
   std::vector<SimdPath> out;
   for (SimdPath p : {SimdPath::Sse2, SimdPath::Avx2, SimdPath::Avx512})

@@ -18,6 +18,9 @@ namespace cb::test {
 // the bit when these are equal.
 std::vector<unsigned char> state_bytes(const ChainState& s);
 
+// FNV-1a over state_bytes: the frozen hashes of tests that pin a path's bits across changes.
+std::uint64_t state_hash(const ChainState& s);
+
 // The instruction sets this CPU runs, SSE2 first.
 std::vector<SimdPath> supported_paths();
 
