@@ -132,19 +132,11 @@ struct Renderer::Impl {
   std::vector<std::uint8_t> row;  // for flipping rows on readback
   std::vector<std::uint8_t> raw;  // read_yuv420's RGBA, as GL gives it (bottom-up)
 
-  Impl(int w, int h) : width(w), height(h) {
+  Impl(int w, int h, RenderTarget target) : width(w), height(h) {
     if (w <= 0 || h <= 0 || w > 16384 || h > 16384)
       throw std::runtime_error("frame size " + std::to_string(w) + "x" + std::to_string(h) +
                                " is out of range (1..16384)");
-    glGenFramebuffers(1, &fbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glGenRenderbuffers(1, &color);
-    glBindRenderbuffer(GL_RENDERBUFFER, color);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, w, h);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-      throw std::runtime_error("the off-screen framebuffer (" + std::to_string(w) + "x" +
-                               std::to_string(h) + ") is incomplete");
+    if (target == RenderTarget::Offscreen) make_framebuffer();
     quad_program = build_program("quad");
     disc_program = build_program("disc");
     triangle_program = build_program("triangle");
@@ -189,6 +181,19 @@ struct Renderer::Impl {
     glBindVertexArray(0);
   }
 
+  // The renderer's own framebuffer: frames the program reads back (PNG, video) and never shows.
+  void make_framebuffer() {
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glGenRenderbuffers(1, &color);
+    glBindRenderbuffer(GL_RENDERBUFFER, color);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+      throw std::runtime_error("the off-screen framebuffer (" + std::to_string(width) + "x" +
+                               std::to_string(height) + ") is incomplete");
+  }
+
   ~Impl() {
     quads.destroy();
     discs.destroy();
@@ -202,6 +207,13 @@ struct Renderer::Impl {
     glDeleteProgram(triangle_program);
     glDeleteRenderbuffers(1, &color);
     glDeleteFramebuffers(1, &fbo);
+  }
+
+  // fbo 0 is the context's own framebuffer, whose colour buffer GL names GL_BACK.
+  void bind_for_reading() {
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glReadBuffer(fbo != 0 ? GL_COLOR_ATTACHMENT0 : GL_BACK);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
   }
 
   // Every program has one uniform, the viewport size, which never changes: set it once.
@@ -315,7 +327,8 @@ struct Renderer::Impl {
   }
 };
 
-Renderer::Renderer(int width, int height) : impl_(std::make_unique<Impl>(width, height)) {}
+Renderer::Renderer(int width, int height, RenderTarget target)
+    : impl_(std::make_unique<Impl>(width, height, target)) {}
 Renderer::~Renderer() = default;
 int Renderer::width() const {
   return impl_->width;
@@ -342,9 +355,7 @@ void Renderer::read(Image& out) {
   out.width = im.width;
   out.height = im.height;
   out.rgba.resize(static_cast<std::size_t>(im.width) * im.height * 4);
-  glBindFramebuffer(GL_FRAMEBUFFER, im.fbo);
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  im.bind_for_reading();
   glReadPixels(0, 0, im.width, im.height, GL_RGBA, GL_UNSIGNED_BYTE, out.rgba.data());
   // GL's rows run bottom-up; images here run top-down.
   const std::size_t row = static_cast<std::size_t>(im.width) * 4;
@@ -363,9 +374,7 @@ void Renderer::read_yuv420(Yuv420Image& out, int width, int height) {
   if (width < im.width || height < im.height)
     throw std::invalid_argument("read_yuv420: the picture must not be smaller than the frame");
   out.resize(width, height);
-  glBindFramebuffer(GL_FRAMEBUFFER, im.fbo);
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  im.bind_for_reading();
   // Bands of rows, each converted while it is still in the cache (a 1080p band of 32 rows
   // is 240 KB; the whole frame, 8 MB, would not stay there). GL's rows run bottom-up, so
   // the band of picture rows [top, top + rows) sits at GL rows [h - top - rows, h - top).
