@@ -1,6 +1,7 @@
 #include "render/renderer.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -120,6 +121,7 @@ struct Renderer::Impl {
   int width, height;
   GLuint fbo = 0, color = 0;
   GLuint quad_program = 0, disc_program = 0, triangle_program = 0, glyph_program = 0;
+  GLuint picture_program = 0, picture_texture = 0;
   InstancedBatch quads, discs, glyphs;
   GLuint atlas_texture = 0;
   GlyphAtlas atlas;
@@ -141,10 +143,13 @@ struct Renderer::Impl {
     disc_program = build_program("disc");
     triangle_program = build_program("triangle");
     glyph_program = build_program("glyph");
-    for (GLuint p : {quad_program, disc_program, triangle_program, glyph_program})
+    picture_program = build_program("glyph", "picture");  // a glyph's rectangle, any colours
+    for (GLuint p : {quad_program, disc_program, triangle_program, glyph_program, picture_program})
       set_viewport_uniform(p);
     glUseProgram(glyph_program);
     glUniform1i(glGetUniformLocation(glyph_program, "u_atlas"), 0);
+    glUseProgram(picture_program);
+    glUniform1i(glGetUniformLocation(picture_program, "u_picture"), 0);
 
     const float quad_corners[] = {0, -1, 1, -1, 0, 1, 1, 1};  // triangle strip
     quads.create(quad_corners, 4);
@@ -166,6 +171,12 @@ struct Renderer::Impl {
     glyphs.attribute(shader::kUv, 4, gs, offsetof(GlyphInstance, uv));
     glyphs.attribute(shader::kColor, 4, gs, offsetof(GlyphInstance, color));
     glGenTextures(1, &atlas_texture);
+    glGenTextures(1, &picture_texture);
+    glBindTexture(GL_TEXTURE_2D, picture_texture);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 
     glGenVertexArrays(1, &triangle_vao);
     glBindVertexArray(triangle_vao);
@@ -199,7 +210,9 @@ struct Renderer::Impl {
     discs.destroy();
     glyphs.destroy();
     glDeleteTextures(1, &atlas_texture);
+    glDeleteTextures(1, &picture_texture);
     glDeleteProgram(glyph_program);
+    glDeleteProgram(picture_program);
     glDeleteBuffers(1, &triangle_buffer);
     glDeleteVertexArrays(1, &triangle_vao);
     glDeleteProgram(quad_program);
@@ -247,6 +260,7 @@ struct Renderer::Impl {
       quad_data.push_back(segment_instance(s.x0, s.y0, s.x1, s.y1, s.width, s.color));
     for (const SpringInstance& s : layer.springs) append_spring(s, quad_data);
     draw_quads();
+    for (const Picture& picture : layer.pictures) draw_picture(picture);
 
     if (!layer.triangles.empty()) {
       triangle_data.clear();
@@ -276,6 +290,22 @@ struct Renderer::Impl {
     }
 
     draw_labels(layer.labels);
+  }
+
+  // One textured rectangle: the picture's colours uploaded, stretched over its pixels.
+  void draw_picture(const Picture& p) {
+    if (p.columns <= 0 || p.rows <= 0) return;
+    assert(p.rgba.size() == static_cast<std::size_t>(p.columns) * p.rows * 4);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, picture_texture);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, p.columns, p.rows, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                 p.rgba.data());
+    glyph_data.assign(1, GlyphInstance{{p.x, p.y, p.w, p.h}, {0, 0, 1, 1}, {1, 1, 1, 1}});
+    use(picture_program);
+    glBindVertexArray(glyphs.vao);
+    upload(glyphs.instances, glyph_data);
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, 1);
   }
 
   // A label's glyphs on whole pixels: its `y` is the top of its capitals, so the baseline is
