@@ -152,10 +152,18 @@ const unbreakable = (n) => `[chain]\nbeads = ${n}\ngamma = 0.0\n[drive]\ntype = 
 // Each case: opens what it measures in `page` and returns extra numbers (or nothing).
 function ceilingCases(size) {
   const html = (text) => async (page) => { await page.setContent(text); };
-  const ours = (which, beads) => async (page) => {
+  // `from`: the tau to run to before playing; late in a run the plots hold their full
+  // histories (2048 samples a curve, 512 rows of the space-time picture).
+  const ours = (which, beads, from) => async (page) => {
     await page.goto("file://" + which);
     await page.evaluate(() => window.chainbreak.ready);
-    if (beads) await page.evaluate((toml) => { window.chainbreak.load(toml); window.chainbreak.play(); }, unbreakable(beads));
+    if (beads) {
+      await page.evaluate(async ([toml, tau]) => {
+        window.chainbreak.load(toml);
+        if (tau) await window.chainbreak.runTo(tau);
+        window.chainbreak.play();
+      }, [unbreakable(beads), from || 0]);
+    }
   };
   const css = { width: Math.round(size.cssWidth), height: Math.round(size.cssHeight),
                 cssWidth: size.cssWidth, cssHeight: size.cssHeight };
@@ -177,6 +185,7 @@ function ceilingCases(size) {
     cases[tag + "page_idle"] = ours(f, 0);
     cases[tag + "page_1000"] = ours(f, 1000);
     cases[tag + "page_1e5"] = ours(f, 100000);
+    cases[tag + "page_1000_late"] = ours(f, 1000, 800);
   });
   return cases;
 }
