@@ -1,6 +1,7 @@
 #include "render/renderer.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -120,6 +121,7 @@ struct Renderer::Impl {
   int width, height;
   GLuint fbo = 0, color = 0;
   GLuint quad_program = 0, disc_program = 0, triangle_program = 0, glyph_program = 0;
+  GLuint picture_program = 0, picture_texture = 0;
   InstancedBatch quads, discs, glyphs;
   GLuint atlas_texture = 0;
   GlyphAtlas atlas;
@@ -132,27 +134,22 @@ struct Renderer::Impl {
   std::vector<std::uint8_t> row;  // for flipping rows on readback
   std::vector<std::uint8_t> raw;  // read_yuv420's RGBA, as GL gives it (bottom-up)
 
-  Impl(int w, int h) : width(w), height(h) {
+  Impl(int w, int h, RenderTarget target) : width(w), height(h) {
     if (w <= 0 || h <= 0 || w > 16384 || h > 16384)
       throw std::runtime_error("frame size " + std::to_string(w) + "x" + std::to_string(h) +
                                " is out of range (1..16384)");
-    glGenFramebuffers(1, &fbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glGenRenderbuffers(1, &color);
-    glBindRenderbuffer(GL_RENDERBUFFER, color);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, w, h);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-      throw std::runtime_error("the off-screen framebuffer (" + std::to_string(w) + "x" +
-                               std::to_string(h) + ") is incomplete");
+    if (target == RenderTarget::Offscreen) make_framebuffer();
     quad_program = build_program("quad");
     disc_program = build_program("disc");
     triangle_program = build_program("triangle");
     glyph_program = build_program("glyph");
-    for (GLuint p : {quad_program, disc_program, triangle_program, glyph_program})
+    picture_program = build_program("glyph", "picture");  // a glyph's rectangle, any colours
+    for (GLuint p : {quad_program, disc_program, triangle_program, glyph_program, picture_program})
       set_viewport_uniform(p);
     glUseProgram(glyph_program);
     glUniform1i(glGetUniformLocation(glyph_program, "u_atlas"), 0);
+    glUseProgram(picture_program);
+    glUniform1i(glGetUniformLocation(picture_program, "u_picture"), 0);
 
     const float quad_corners[] = {0, -1, 1, -1, 0, 1, 1, 1};  // triangle strip
     quads.create(quad_corners, 4);
@@ -174,6 +171,12 @@ struct Renderer::Impl {
     glyphs.attribute(shader::kUv, 4, gs, offsetof(GlyphInstance, uv));
     glyphs.attribute(shader::kColor, 4, gs, offsetof(GlyphInstance, color));
     glGenTextures(1, &atlas_texture);
+    glGenTextures(1, &picture_texture);
+    glBindTexture(GL_TEXTURE_2D, picture_texture);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 
     glGenVertexArrays(1, &triangle_vao);
     glBindVertexArray(triangle_vao);
@@ -189,12 +192,27 @@ struct Renderer::Impl {
     glBindVertexArray(0);
   }
 
+  // The renderer's own framebuffer: frames the program reads back (PNG, video) and never shows.
+  void make_framebuffer() {
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glGenRenderbuffers(1, &color);
+    glBindRenderbuffer(GL_RENDERBUFFER, color);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+      throw std::runtime_error("the off-screen framebuffer (" + std::to_string(width) + "x" +
+                               std::to_string(height) + ") is incomplete");
+  }
+
   ~Impl() {
     quads.destroy();
     discs.destroy();
     glyphs.destroy();
     glDeleteTextures(1, &atlas_texture);
+    glDeleteTextures(1, &picture_texture);
     glDeleteProgram(glyph_program);
+    glDeleteProgram(picture_program);
     glDeleteBuffers(1, &triangle_buffer);
     glDeleteVertexArrays(1, &triangle_vao);
     glDeleteProgram(quad_program);
@@ -202,6 +220,13 @@ struct Renderer::Impl {
     glDeleteProgram(triangle_program);
     glDeleteRenderbuffers(1, &color);
     glDeleteFramebuffers(1, &fbo);
+  }
+
+  // fbo 0 is the context's own framebuffer, whose colour buffer GL names GL_BACK.
+  void bind_for_reading() {
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glReadBuffer(fbo != 0 ? GL_COLOR_ATTACHMENT0 : GL_BACK);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
   }
 
   // Every program has one uniform, the viewport size, which never changes: set it once.
@@ -235,6 +260,7 @@ struct Renderer::Impl {
       quad_data.push_back(segment_instance(s.x0, s.y0, s.x1, s.y1, s.width, s.color));
     for (const SpringInstance& s : layer.springs) append_spring(s, quad_data);
     draw_quads();
+    for (const Picture& picture : layer.pictures) draw_picture(picture);
 
     if (!layer.triangles.empty()) {
       triangle_data.clear();
@@ -264,6 +290,22 @@ struct Renderer::Impl {
     }
 
     draw_labels(layer.labels);
+  }
+
+  // One textured rectangle: the picture's colours uploaded, stretched over its pixels.
+  void draw_picture(const Picture& p) {
+    if (p.columns <= 0 || p.rows <= 0) return;
+    assert(p.rgba.size() == static_cast<std::size_t>(p.columns) * p.rows * 4);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, picture_texture);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, p.columns, p.rows, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                 p.rgba.data());
+    glyph_data.assign(1, GlyphInstance{{p.x, p.y, p.w, p.h}, {0, 0, 1, 1}, {1, 1, 1, 1}});
+    use(picture_program);
+    glBindVertexArray(glyphs.vao);
+    upload(glyphs.instances, glyph_data);
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, 1);
   }
 
   // A label's glyphs on whole pixels: its `y` is the top of its capitals, so the baseline is
@@ -315,7 +357,8 @@ struct Renderer::Impl {
   }
 };
 
-Renderer::Renderer(int width, int height) : impl_(std::make_unique<Impl>(width, height)) {}
+Renderer::Renderer(int width, int height, RenderTarget target)
+    : impl_(std::make_unique<Impl>(width, height, target)) {}
 Renderer::~Renderer() = default;
 int Renderer::width() const {
   return impl_->width;
@@ -342,9 +385,7 @@ void Renderer::read(Image& out) {
   out.width = im.width;
   out.height = im.height;
   out.rgba.resize(static_cast<std::size_t>(im.width) * im.height * 4);
-  glBindFramebuffer(GL_FRAMEBUFFER, im.fbo);
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  im.bind_for_reading();
   glReadPixels(0, 0, im.width, im.height, GL_RGBA, GL_UNSIGNED_BYTE, out.rgba.data());
   // GL's rows run bottom-up; images here run top-down.
   const std::size_t row = static_cast<std::size_t>(im.width) * 4;
@@ -363,9 +404,7 @@ void Renderer::read_yuv420(Yuv420Image& out, int width, int height) {
   if (width < im.width || height < im.height)
     throw std::invalid_argument("read_yuv420: the picture must not be smaller than the frame");
   out.resize(width, height);
-  glBindFramebuffer(GL_FRAMEBUFFER, im.fbo);
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  im.bind_for_reading();
   // Bands of rows, each converted while it is still in the cache (a 1080p band of 32 rows
   // is 240 KB; the whole frame, 8 MB, would not stay there). GL's rows run bottom-up, so
   // the band of picture rows [top, top + rows) sits at GL rows [h - top - rows, h - top).

@@ -1,5 +1,6 @@
-// Draws a RenderSnapshot with OpenGL 3.3 core into an off-screen framebuffer and reads it
-// back as an Image. It sees only the snapshot: never the physics state or the scene.
+// Draws a RenderSnapshot with OpenGL 3.3 core into an off-screen framebuffer (or the context's
+// own, for the web page's canvas) and reads it back as an Image. It sees only the snapshot:
+// never the physics state or the scene.
 //
 // Design note: each layer is drawn back to front; every shape kind is one instanced draw
 // from a per-frame instance buffer (sokol's habit): rectangles, segments, coils and text
@@ -13,18 +14,24 @@
 
 namespace cb {
 
+// Where frames are drawn. The program draws off screen and reads the frame back; the web page
+// draws straight into its canvas, which is width x height: a blit of a whole frame from an
+// off-screen framebuffer halved the frame rate a canvas can reach on SwiftShader
+// (tests/bench/README.md, session 10).
+enum class RenderTarget { Offscreen, DefaultFramebuffer };
+
 class Renderer {
  public:
   // Needs a current GlContext (gl/gl_context.h). Throws std::runtime_error if the shaders
   // do not build or the framebuffer is incomplete.
-  Renderer(int width, int height);
+  Renderer(int width, int height, RenderTarget target = RenderTarget::Offscreen);
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
   int width() const;
   int height() const;
-  void draw(const RenderSnapshot& snapshot);  // into the off-screen framebuffer (stays bound)
+  void draw(const RenderSnapshot& snapshot);  // into the target framebuffer (stays bound)
   void read(Image& out);                      // glReadPixels, rows flipped to top-down
   // The frame as an encoder takes it (Y'CbCr 4:2:0, BT.709, limited range; output/yuv420.h):
   // width x height may exceed the frame by the padding H.264 needs (the edge repeats).

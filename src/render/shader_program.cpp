@@ -63,8 +63,12 @@ GLuint compile(GLenum kind, const std::string& file) {
 }  // namespace
 
 unsigned int build_program(const std::string& name) {
-  const GLuint vs = compile(GL_VERTEX_SHADER, name + ".vert");
-  const GLuint fs = compile(GL_FRAGMENT_SHADER, name + ".frag");
+  return build_program(name, name);
+}
+
+unsigned int build_program(const std::string& vert, const std::string& frag) {
+  const GLuint vs = compile(GL_VERTEX_SHADER, vert + ".vert");
+  const GLuint fs = compile(GL_FRAGMENT_SHADER, frag + ".frag");
   const GLuint program = glCreateProgram();
   glAttachShader(program, vs);
   glAttachShader(program, fs);
@@ -77,7 +81,7 @@ unsigned int build_program(const std::string& name) {
     char log[4096] = {0};
     glGetProgramInfoLog(program, sizeof log, nullptr, log);
     glDeleteProgram(program);
-    throw std::runtime_error("shaders/" + name + ".vert/.frag do not link: " + log);
+    throw std::runtime_error("shaders/" + vert + ".vert and " + frag + ".frag do not link: " + log);
   }
   return program;
 }

@@ -68,8 +68,17 @@ struct Label {
   FontFace face = FontFace::Sans;
 };
 
+// A grid of columns x rows colours (RGBA8, rows top-down) stretched over a pixel rectangle,
+// each cell a sharp block: one textured quad where one rect per cell (the page's space-time
+// picture, up to 512 x 256 cells) cost SwiftShader more than the rest of the frame.
+struct Picture {
+  float x = 0, y = 0, w = 0, h = 0;  // pixels
+  int columns = 0, rows = 0;
+  std::vector<std::uint8_t> rgba;  // columns * rows * 4
+};
+
 // One drawing layer; layers are drawn in order (back to front), each shape kind in one
-// instanced call.
+// instanced call (pictures, one call each, right after the layer's rects and segments).
 struct Layer {
   std::vector<Rect> rects;
   std::vector<Segment> segments;
@@ -77,6 +86,7 @@ struct Layer {
   std::vector<SpringInstance> springs;
   std::vector<BeadInstance> beads;
   std::vector<Label> labels;
+  std::vector<Picture> pictures;
 };
 
 // Layers, back to front. Tests and overlays may rely on this order.

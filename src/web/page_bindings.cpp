@@ -3,10 +3,10 @@
 //
 // Design note: errors cross into JavaScript as strings ("" when all went well), never as C++
 // exceptions, so page.js can show the reader's message next to the control that caused it and
-// the test API can throw an Error carrying it. The renderer draws into its own framebuffer,
-// blitted to the canvas: pixels() reads that framebuffer at any time, and the page's PNG
-// button draws and encodes in one task, so the canvas need not keep its buffer
-// (preserveDrawingBuffer, a copy per frame on SwiftShader).
+// the test API can throw an Error carrying it. The renderer draws straight into the canvas's
+// framebuffer (a blit from a framebuffer of its own halved the frame rate on SwiftShader).
+// The canvas does not keep its buffer after it is shown (preserveDrawingBuffer, a copy per
+// frame on SwiftShader), so pixels() and the page's PNG button draw and read in one task.
 #include <emscripten/bind.h>
 #include <emscripten/html5.h>
 #include <emscripten/val.h>
@@ -45,6 +45,7 @@ class Page {
     a.alpha = false;
     a.antialias = false;              // the renderer antialiases its own shapes, as in the program
     a.preserveDrawingBuffer = false;  // PNGs and pixels() read right after drawing
+    a.depth = false;  // the renderer draws back to front; a depth buffer is one more clear a frame
     context_ = emscripten_webgl_create_context("#chain", &a);
     if (context_ <= 0)
       return "this browser gives no WebGL2 context (error " + std::to_string(context_) +
@@ -173,14 +174,12 @@ class Page {
     return guarded([&] {
       if (context_ <= 0) throw std::runtime_error("no WebGL2 context");
       if (!renderer_ || renderer_->width() != width || renderer_->height() != height)
-        renderer_ = std::make_unique<Renderer>(width, height);
+        renderer_ = std::make_unique<Renderer>(width, height, RenderTarget::DefaultFramebuffer);
       renderer_->draw(session_.snapshot(width, height, theme, view, plots));
-      // The renderer's framebuffer to the canvas's: same size, same orientation.
-      glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-      glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     });
   }
-  // The last frame drawn, RGBA rows top-down (as `chainbreak snapshot` writes its PNG).
+  // The frame drawn in this task, RGBA rows top-down (as `chainbreak snapshot` writes its PNG);
+  // once the canvas has been shown its buffer is gone, so call draw() first.
   emscripten::val pixels() {
     if (!renderer_) return emscripten::val::null();
     renderer_->read(image_);
