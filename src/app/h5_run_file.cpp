@@ -1,8 +1,8 @@
 #include "app/h5_run_file.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <optional>
 
 #include "h5/h5_file.h"
@@ -123,26 +123,14 @@ class H5RunFile : public RunFile {
  public:
   H5RunFile(const std::string& path, const RunDescription& d, int deflate)
       : staged_(path), writer_(staged_.temp()), description_(d), deflate_(deflate) {}
-  // Resumable (run --checkpoint): under the stable partial name, kept when the run stops;
-  // `resume_rows`: continue that file from a checkpoint's row count.
-  H5RunFile(const std::string& path, const RunDescription& d, int deflate,
-            std::optional<std::uint64_t> resume_rows)
-      : staged_(path, resume_partial_path(path)),
-        writer_(open_writer(staged_.temp(), path, resume_rows.has_value())),
-        description_(d),
-        deflate_(deflate),
-        resume_rows_(resume_rows) {}
 
   void begin(int beads, bool with_psi, std::int64_t max_rows) override {
-    // A continued file has its description and datasets: they are opened and cut back to
-    // the checkpoint's rows (rows written after it, before the process stopped, go), with the
-    // chunk shapes of max_rows as before, so the rows that follow land as they would have.
-    if (!resume_rows_) write_description(writer_, description_);
+    write_description(writer_, description_);
     const ChunkShape line = chunk_shape(0, max_rows);
     for (const Series& s : kSeries) {
       const std::string path = std::string("/observables/") + s.name;
-      series_.emplace_back(writer_, open(path, 0, line), 1, line.rows);
-      if (resume_rows_) continue;
+      series_.emplace_back(writer_, writer_.dataset({path, 0, line.rows, line.columns, deflate_}),
+                           1, line.rows);
       writer_.attr(path, "unit", std::string(s.unit));
       writer_.attr(path, "description", std::string(s.description));
     }
@@ -150,8 +138,8 @@ class H5RunFile : public RunFile {
     const ChunkShape band = chunk_shape(n, max_rows);
     auto matrix = [&](const char* name, const char* unit, const char* what) {
       const std::string path = std::string("/chain/") + name;
-      matrices_.emplace_back(writer_, open(path, n, band), n, band.rows);
-      if (resume_rows_) return;
+      matrices_.emplace_back(writer_, writer_.dataset({path, n, band.rows, band.columns, deflate_}),
+                             n, band.rows);
       writer_.attr(path, "unit", std::string(unit));
       writer_.attr(path, "description", std::string(what));
     };
@@ -179,47 +167,8 @@ class H5RunFile : public RunFile {
     writer_.close();
     staged_.commit();
   }
-  void sync(OutputsAt& at) override {
-    flush();  // partial bands too: a chunk begun here is completed after the checkpoint
-    writer_.flush();
-    at.h5_rows = writer_.rows(series_.front().id());
-  }
 
  private:
-  // The partial file, created or continued; a file HDF5 cannot continue is refused as a
-  // checkpoint's output that is not there (exit 2, what to do), not as a failure of ours.
-  static h5::Writer open_writer(const std::string& partial, const std::string& path, bool resume) {
-    if (!resume) return h5::Writer(partial);
-    std::error_code error;
-    if (!std::filesystem::exists(partial, error))
-      throw OutputError(path + ": the partial file " + partial +
-                        " that the checkpoint continues is missing; run again from the start");
-    try {
-      return h5::Writer(partial, h5::Writer::Mode::Continue);
-    } catch (const h5::H5Error& e) {
-      throw cannot_continue(path, partial, e);
-    }
-  }
-  // HDF5 marks a file open for writing in its superblock until it is closed, and without SWMR
-  // does not keep a file whole across a crash: one the process was killed over (SIGKILL,
-  // a crash) after its last checkpoint is refused, never patched up.
-  static OutputError cannot_continue(const std::string& path, const std::string& partial,
-                                     const h5::H5Error& e) {
-    return OutputError(path + ": cannot continue the partial HDF5 file " + partial + " (" +
-                       e.what() +
-                       "): it was not closed (the run was killed, not stopped by SIGTERM or "
-                       "SIGINT), or it is damaged; run again from the start");
-  }
-  int open(const std::string& path, std::uint64_t columns, ChunkShape chunk) {
-    if (!resume_rows_) return writer_.dataset({path, columns, chunk.rows, chunk.columns, deflate_});
-    try {
-      const int id = writer_.open_dataset(path, columns);
-      writer_.truncate(id, *resume_rows_);
-      return id;
-    } catch (const h5::H5Error& e) {
-      throw cannot_continue(staged_.path(), staged_.temp(), e);
-    }
-  }
   void flush() {
     for (Band& b : series_) b.flush();
     for (Band& b : matrices_) b.flush();
@@ -228,8 +177,101 @@ class H5RunFile : public RunFile {
   h5::Writer writer_;
   RunDescription description_;
   int deflate_;
-  std::optional<std::uint64_t> resume_rows_;
   std::vector<Band> series_, matrices_;
+};
+
+// A resumable run's HDF5 file (run --checkpoint). HDF5 without SWMR keeps no file whole across
+// a kill: it rewrites metadata in place and marks the superblock open for writing until the
+// file is closed. So the rows go to a journal first, each row's doubles as they are in memory
+// (tau, f, energy, kinetic, potential, phi[, psi, psi_dot]) appended to the partial file
+// "<dir>/.<name>.resume" (ResumableFile: fsynced and measured at each checkpoint, cut back to
+// the checkpoint by a resume, after SIGTERM and SIGKILL alike). When the run ends, the HDF5
+// file is written from the journal by H5RunFile with the calls a run without checkpoints makes,
+// in the same order: the same bytes. The cost: the rows are written twice, and the disk holds
+// them twice until the journal is removed (run_command.cpp's disk estimate counts both).
+class JournaledH5RunFile : public RunFile {
+ public:
+  JournaledH5RunFile(const std::string& path, const RunDescription& d, int deflate,
+                     std::optional<std::uint64_t> resume_rows)
+      : path_(path),
+        description_(d),
+        deflate_(deflate),
+        row_values_(5 + static_cast<std::uint64_t>(d.beads) * (d.psi ? 3 : 1)),
+        rows_(resume_rows.value_or(0)),
+        journal_(path, resume_rows ? std::optional(*resume_rows * row_bytes()) : std::nullopt) {}
+
+  void begin(int beads, bool with_psi, std::int64_t max_rows) override {
+    if (beads != description_.beads || with_psi != description_.psi)
+      throw OutputError(path_ + ": the run's rows do not match its description");
+    max_rows_ = max_rows;
+  }
+  void row(const RunRow& r) override {
+    const double values[] = {r.tau, r.f, r.energy, r.kinetic, r.potential};
+    write(values, 5);
+    write(r.phi->data(), r.phi->size());
+    if (description_.psi) {
+      write(r.psi->data(), r.psi->size());
+      write(r.vel->data(), r.vel->size());
+    }
+    ++rows_;
+  }
+  void end(const RunOutcome& outcome) override { outcome_ = outcome; }
+  void sync(OutputsAt& at) override {
+    const std::uint64_t bytes = journal_.sync();
+    if (bytes != rows_ * row_bytes())
+      throw OutputError(path_ + ": the journal " + journal_.partial() + " holds " +
+                        std::to_string(bytes) + " bytes, not the " + std::to_string(rows_) +
+                        " rows written");
+    at.h5_rows = rows_;
+  }
+  void commit() override {
+    sync_journal();
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> in(std::fopen(journal_.partial().c_str(), "rb"),
+                                                       std::fclose);
+    if (!in) throw OutputError(path_ + ": cannot read back its journal " + journal_.partial());
+    H5RunFile file(path_, description_, deflate_);
+    file.begin(description_.beads, description_.psi, max_rows_);
+    const auto n = static_cast<std::size_t>(description_.beads);
+    std::vector<double> head(5), phi(n), psi(description_.psi ? n : 0), vel(psi.size());
+    RunRow row;
+    row.phi = &phi;
+    if (description_.psi) row.psi = &psi, row.vel = &vel;
+    for (std::uint64_t i = 0; i < rows_; ++i) {
+      read(in.get(), head);
+      read(in.get(), phi);
+      read(in.get(), psi);
+      read(in.get(), vel);
+      row.tau = head[0], row.f = head[1], row.energy = head[2];
+      row.kinetic = head[3], row.potential = head[4];
+      file.row(row);
+    }
+    file.end(outcome_);
+    file.commit();
+    in.reset();
+    journal_.discard();
+  }
+
+ private:
+  std::uint64_t row_bytes() const { return row_values_ * sizeof(double); }
+  void write(const double* values, std::size_t count) {
+    journal_.write({reinterpret_cast<const char*>(values), count * sizeof(double)});
+  }
+  void sync_journal() {
+    OutputsAt at;
+    sync(at);
+  }
+  void read(std::FILE* in, std::vector<double>& values) const {
+    if (!values.empty() && std::fread(values.data(), sizeof(double), values.size(), in) !=
+                               values.size())
+      throw OutputError(path_ + ": its journal " + journal_.partial() + " ended early");
+  }
+  std::string path_;
+  RunDescription description_;
+  int deflate_;
+  std::uint64_t row_values_, rows_;
+  std::int64_t max_rows_ = 1;
+  RunOutcome outcome_;
+  ResumableFile journal_;
 };
 
 }  // namespace
@@ -258,7 +300,7 @@ std::unique_ptr<RunFile> h5_run_file(const std::string& path, const RunDescripti
 std::unique_ptr<RunFile> resumable_h5_run_file(const std::string& path,
                                                const RunDescription& description, int deflate,
                                                std::optional<std::uint64_t> resume_rows) {
-  return std::make_unique<H5RunFile>(path, description, deflate, resume_rows);
+  return std::make_unique<JournaledH5RunFile>(path, description, deflate, resume_rows);
 }
 
 namespace {

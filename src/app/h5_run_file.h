@@ -29,10 +29,11 @@ namespace cb {
 std::unique_ptr<RunFile> h5_run_file(const std::string& path, const RunDescription& description,
                                      int deflate);
 
-// The same file, resumable (run --checkpoint; RunFile::sync records its rows): written as
-// "<dir>/.<name>.resume" and kept when the run stops, or (resume_rows) that partial file
-// continued from a checkpoint's rows. Throws OutputError when it is missing, h5::H5Error when
-// HDF5 cannot continue it.
+// The same file for a resumable run (run --checkpoint; RunFile::sync records its rows): the
+// rows go to a journal, "<dir>/.<name>.resume", which a checkpoint makes durable and a resumed
+// run (resume_rows) cuts back to the checkpoint's rows, after SIGTERM or SIGKILL alike; the
+// HDF5 file is written from it when the run ends, the same bytes as h5_run_file's. Throws
+// OutputError when the journal is missing or shorter than the checkpoint says.
 std::unique_ptr<RunFile> resumable_h5_run_file(const std::string& path,
                                                const RunDescription& description, int deflate,
                                                std::optional<std::uint64_t> resume_rows);

@@ -117,7 +117,10 @@ RunNeeds run_needs(const RunOptions& o, const SceneDesc& scene) {
     n.memory.needs.push_back(
         {"HDF5 row bands", 8.0 * static_cast<double>(band.rows) * beads * matrices});
     n.h5_rows = static_cast<double>(rows);
-    n.h5_bytes = 8.0 * n.h5_rows * (5 + beads * matrices);
+    // With --checkpoint the rows go to a journal first, and the file is written from it when
+    // the run ends (h5_run_file.cpp): the disk holds them twice until the journal goes.
+    const double copies = o.checkpoint.empty() ? 1 : 2;
+    n.h5_bytes = copies * 8.0 * n.h5_rows * (5 + beads * matrices);
   }
   return n;
 }
@@ -156,7 +159,8 @@ void require_disk(const std::string& what, const std::string& path, double bytes
 
 void require_disk(const RunOptions& o, const RunNeeds& n) {
   require_disk("CSV", o.csv, n.csv_bytes, n.csv_rows);
-  require_disk("HDF5 file", o.h5, n.h5_bytes, n.h5_rows);
+  require_disk(o.checkpoint.empty() ? "HDF5 file" : "HDF5 file and its journal", o.h5, n.h5_bytes,
+               n.h5_rows);
 }
 
 }  // namespace

@@ -13,8 +13,11 @@ namespace cb {
 
 namespace {
 
-// 02: h5_rows after csv_bytes (01 had no HDF5 file to resume; refused as not a checkpoint).
-constexpr char kMagic[8] = {'C', 'B', 'C', 'K', 'P', 'T', '0', '2'};
+// 02: h5_rows after csv_bytes (01 had no HDF5 file to resume). 03: the same fields, but
+// h5_rows counts the rows of the HDF5 file's journal (h5_run_file.cpp), where 02's counted
+// those of a partial HDF5 file under the same name. Earlier formats are refused as not a
+// checkpoint: their partial files would be misread.
+constexpr char kMagic[8] = {'C', 'B', 'C', 'K', 'P', 'T', '0', '3'};
 constexpr std::size_t kHeader = 8 + 8 + 8;  // magic, payload length, checksum
 
 std::uint64_t fnv1a(const char* data, std::size_t size) {
@@ -135,7 +138,7 @@ std::string encode_checkpoint(const Checkpoint& c) {
 
 Checkpoint decode_checkpoint(const std::string& bytes) {
   if (bytes.size() < kHeader || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)
-    throw CheckpointError("not a chainbreak checkpoint (no CBCKPT02 header)");
+    throw CheckpointError("not a chainbreak checkpoint (no CBCKPT03 header)");
   In header(bytes.data() + 8, 16);
   const std::uint64_t length = header.u64(), checksum = header.u64();
   if (length != bytes.size() - kHeader)

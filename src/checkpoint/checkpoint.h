@@ -30,7 +30,7 @@ struct Checkpoint {
   ChainState state;
   std::uint64_t next_kick = 0, next_breakpoint = 0;  // Integrator::Cursor
   std::uint64_t csv_bytes = 0;  // the CSV's partial file up to here belongs to this state
-  std::uint64_t h5_rows = 0;    // so do the HDF5 file's datasets up to this many rows
+  std::uint64_t h5_rows = 0;    // so do the rows of the HDF5 file's journal
 };
 
 // Encodes and decodes the file's bytes; decode throws CheckpointError ("what is wrong").

@@ -1,7 +1,6 @@
 #include "h5/h5_file.h"
 
 #include <hdf5.h>
-#include <unistd.h>
 
 #include <limits>
 #include <memory>
@@ -67,21 +66,15 @@ Handle dataset_access() {
 
 }  // namespace
 
-Writer::Writer(const std::string& path, Mode mode) : path_(path) {
+Writer::Writer(const std::string& path) : path_(path) {
   quiet_library();
   // HDF5 1.10's format, the newest 1.10.8 writes: its chunk index for one unlimited dimension
   // (an extensible array) takes less room and time than 1.8's B-tree, and the superblock
   // (version 3), object headers (version 2), B-trees (version 2) and the extensible array
   // carry checksums, so a reader is told of damaged metadata instead of following it. HDF5
-  // >= 1.10 (h5py, h5dump) reads it. A continued file keeps the bounds, so what is added to
-  // it is of the same versions.
+  // >= 1.10 (h5py, h5dump) reads it.
   Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
   H5Pset_libver_bounds(fapl.get(), H5F_LIBVER_V110, H5F_LIBVER_V110);
-  if (mode == Mode::Continue) {
-    file_ = H5Fopen(path.c_str(), H5F_ACC_RDWR, fapl.get());
-    require(file_ >= 0, path_, "HDF5 cannot open it for writing");
-    return;
-  }
   // Attributes stay in their object's header (compact storage, up to 64 of them) rather than
   // moving to dense storage (a fractal heap and a B-tree of names) past HDF5's default of 8:
   // the root's 30-odd attributes then sit in checksummed headers, read in one piece.
@@ -138,44 +131,6 @@ int Writer::dataset(const DatasetSpec& spec) {
   require(id >= 0, path_, "cannot create the dataset " + spec.path);
   datasets_.push_back({id, 0, spec.columns, spec.path});
   return static_cast<int>(datasets_.size() - 1);
-}
-
-int Writer::open_dataset(const std::string& path, std::uint64_t columns) {
-  Handle dapl = dataset_access();
-  const hid_t id = H5Dopen2(file_, path.c_str(), dapl.get());
-  require(id >= 0, path_, "no dataset " + path + " to continue");
-  datasets_.push_back({id, 0, columns, path});
-  Handle space(H5Dget_space(id), H5Sclose);
-  hsize_t dims[2] = {0, 0};
-  const int rank = H5Sget_simple_extent_ndims(space.get());
-  require(rank == (columns ? 2 : 1) && H5Sget_simple_extent_dims(space.get(), dims, nullptr) >= 0 &&
-              dims[1] == (columns ? columns : 0),
-          path_, path + " is not of the shape it was written with");
-  datasets_.back().rows = dims[0];
-  return static_cast<int>(datasets_.size() - 1);
-}
-
-std::uint64_t Writer::rows(int index) const {
-  return datasets_.at(static_cast<std::size_t>(index)).rows;
-}
-
-void Writer::truncate(int index, std::uint64_t rows) {
-  Dataset& d = datasets_.at(static_cast<std::size_t>(index));
-  require(rows <= d.rows, path_,
-          d.path + " has " + std::to_string(d.rows) + " rows, fewer than " + std::to_string(rows));
-  const hsize_t extent[2] = {rows, d.columns};
-  require(H5Dset_extent(d.id, extent) >= 0, path_, "cannot cut " + d.path + " back");
-  d.rows = rows;
-}
-
-void Writer::flush() {
-  void* handle = nullptr;
-  bool ok = H5Fflush(file_, H5F_SCOPE_GLOBAL) >= 0;
-  // HDF5 hands its writes to the kernel; fsync puts them on the disk (the sec2 driver's
-  // handle is the file descriptor).
-  ok = ok && H5Fget_vfd_handle(file_, H5P_DEFAULT, &handle) >= 0 && handle &&
-       ::fsync(*static_cast<int*>(handle)) == 0;
-  require(ok, path_, "flushing the HDF5 file failed (disk full?)");
 }
 
 void Writer::append(int index, const double* values, std::uint64_t rows) {

@@ -31,10 +31,8 @@ struct DatasetSpec {
 
 class Writer {
  public:
-  enum class Mode { Create, Continue };
-  // Create: creates or truncates the file. Continue: opens the existing file for writing, to
-  // append to datasets it has (open_dataset); H5Error when it is missing or damaged.
-  explicit Writer(const std::string& path, Mode mode = Mode::Create);
+  // Creates or truncates the file.
+  explicit Writer(const std::string& path);
   ~Writer();
   Writer(const Writer&) = delete;
   Writer& operator=(const Writer&) = delete;
@@ -42,11 +40,6 @@ class Writer {
   void group(const std::string& path);
   // Creates an empty dataset; returns its handle for append().
   int dataset(const DatasetSpec& spec);
-  // Opens a dataset of a continued file (`columns` as it was created); returns its handle.
-  int open_dataset(const std::string& path, std::uint64_t columns);
-  std::uint64_t rows(int id) const;
-  // Cuts dataset `id` back to its first `rows` rows (H5Error when it has fewer).
-  void truncate(int id, std::uint64_t rows);
   // Appends `rows` rows (rows x columns doubles, row-major) at the end of dataset `id`.
   void append(int id, const double* values, std::uint64_t rows);
   void append_ints(int id, const std::int64_t* values, std::uint64_t rows);
@@ -60,9 +53,6 @@ class Writer {
   void attr(const std::string& object, const std::string& name,
             const std::vector<std::int64_t>& values);
 
-  // Writes everything HDF5 holds in memory to the file and fsyncs it: what was appended so far
-  // is on disk, in a file a reader (or Mode::Continue) can open. Throws H5Error.
-  void flush();
   // Flushes and closes the file; throws H5Error (e.g. disk full). The destructor closes
   // without checking.
   void close();

@@ -42,13 +42,8 @@ StagedPath::StagedPath(std::string path) : path_(std::move(path)) {
               .string();
 }
 
-StagedPath::StagedPath(std::string path, std::string temp)
-    : path_(std::move(path)), temp_(std::move(temp)), keep_(true) {
-  check_output_path(path_, "out" + fs::path(path_).extension().string());
-}
-
 StagedPath::~StagedPath() {
-  if (!committed_ && !keep_) std::remove(temp_.c_str());
+  if (!committed_) std::remove(temp_.c_str());
 }
 
 void StagedPath::commit() {

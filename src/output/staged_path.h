@@ -12,9 +12,6 @@ class StagedPath {
  public:
   // Checks the target's folder at once (OutputError with a fix, as check_output_path).
   explicit StagedPath(std::string path);
-  // A resumable file's (`run --checkpoint`): `temp` is its stable partial name, kept when the
-  // process stops uncommitted, so a resumed run continues it.
-  StagedPath(std::string path, std::string temp);
   ~StagedPath();
   StagedPath(const StagedPath&) = delete;
   StagedPath& operator=(const StagedPath&) = delete;
@@ -27,7 +24,7 @@ class StagedPath {
 
  private:
   std::string path_, temp_;
-  bool committed_ = false, keep_ = false;
+  bool committed_ = false;
 };
 
 }  // namespace cb

@@ -160,7 +160,7 @@ put("fuzz_merge", shard_text(THRESHOLD, 1, 3, 0, 3, threshold_rows(0, 3))
 put("fuzz_merge", shard_text(THRESHOLD, 1, 3, 0, 3, threshold_rows(0, 3))
     .replace('"first_point": 0', '"first_point": -1'), "merge_negative_point")
 
-# Checkpoints (checkpoint/checkpoint.cpp's format CBCKPT02, encoded here field by field): a
+# Checkpoints (checkpoint/checkpoint.cpp's format CBCKPT03, encoded here field by field): a
 # CSV run of 4 beads after two impulses with a broken spring, and a run that also writes an
 # HDF5 file (the command's h5 and h5_compress, and the file's rows after the CSV's bytes).
 import struct  # noqa: E402
@@ -188,7 +188,7 @@ def checkpoint(command, step, psi, vel, broken, breaks, csv_bytes, h5_rows):
     p += struct.pack("<Q", len(breaks))
     p += b"".join(struct.pack("<qdq", s, t, k) for s, t, k in breaks)
     p += doubles(psi) + doubles(vel) + struct.pack("<QQQQ", 2, 0, csv_bytes, h5_rows)
-    return b"CBCKPT02" + struct.pack("<QQ", len(p), fnv1a(p)) + p
+    return b"CBCKPT03" + struct.pack("<QQ", len(p), fnv1a(p)) + p
 
 
 def run_command(scene, sets, extra):
