@@ -159,10 +159,6 @@ RunOutcome run_formula(const SceneDesc& scene, const RunRequest& req, RowSink* s
 
 }  // namespace
 
-std::int64_t planned_steps(const SceneDesc& s) {
-  return std::llround(s.integrator.t_end / s.integrator.dt);
-}
-
 void continuum_profile(int beads, double tau, const std::function<double(double)>& f,
                        std::vector<double>& psi, std::vector<double>* phi) {
   double sum = 0.0;

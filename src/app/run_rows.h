@@ -79,11 +79,6 @@ struct RunOutcome {
   std::optional<SimdPath> simd;           // rk4 only: the kernel's instruction set
 };
 
-// The last step a run of the scene can reach: t_end on the step grid. A run with after_break
-// may stop earlier (at the first grid step at or past the first break plus after_break), which
-// only the run can tell, so this is the bound that rows, progress and estimates are sized by.
-std::int64_t planned_steps(const SceneDesc& scene);
-
 // Throws SceneError for a request the scene cannot serve (every < 1, continuum + impulses,
 // continuum for a chain of unequal beads or springs).
 void check_run_request(const SceneDesc& scene, const RunRequest& request);

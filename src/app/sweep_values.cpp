@@ -7,7 +7,6 @@
 #include <stdexcept>
 #include <thread>
 
-#include "app/run_rows.h"  // planned_steps
 #include "drive/drive.h"
 #include "figures/break_maps.h"
 #include "physics/lane_schedule.h"

@@ -249,7 +249,7 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
     for (int k = 0; k < kLanes; ++k) {
       h2[k] = 0.5 * h[k];
       h6[k] = h[k] / 6.0;
-      slack[k] = (4.0 / 27.0) * h[k];
+      slack[k] = detail::hermite_slack(h[k]);
     }
     // The PerBead stencil as soon as one lane needs it (uniform lanes hold ones: same bits).
     const bool per_bead = std::any_of(std::begin(lanes), std::end(lanes),

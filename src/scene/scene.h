@@ -4,6 +4,7 @@
 // can make is reported as "file:line:column: what is wrong, and how to fix it".
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -109,6 +110,14 @@ struct SceneError : std::runtime_error {
  private:
   std::vector<std::string> messages_;
 };
+
+// The last step a run of the scene can reach: t_end on the step grid. A run with after_break
+// may stop earlier (at the first grid step at or past the first break plus after_break), which
+// only the run can tell, so this is the bound that rows, progress and estimates are sized by.
+// The one definition, for `run`, `sweep`, the page and the Python module.
+inline std::int64_t planned_steps(const SceneDesc& scene) {
+  return std::llround(scene.integrator.t_end / scene.integrator.dt);
+}
 
 // The one check of a scene's values, apart from parsing: units, ranges, RK4's stability limit,
 // drive limits, the chain's arrays, the [render] settings. The TOML reader, --set, sweep's

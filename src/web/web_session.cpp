@@ -11,11 +11,6 @@ namespace cb {
 
 namespace {
 
-// `run`'s step count (app/run_rows.cpp): t_end on the scene's step grid.
-std::int64_t planned_steps(const SceneDesc& s) {
-  return std::llround(s.integrator.t_end / s.integrator.dt);
-}
-
 // The layout's pre-pass runs the physics to the first break (app/frames.h, measure_run). A
 // long chain's whole run would hold the page for seconds: past this many bead-steps the
 // pre-pass stops early and the chain may leave the frame late in the run.
