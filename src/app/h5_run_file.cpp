@@ -5,6 +5,7 @@
 #include <cstring>
 #include <optional>
 
+#include "app/progress.h"
 #include "h5/h5_file.h"
 #include "output/output_file.h"
 #include "output/resumable_file.h"
@@ -192,10 +193,11 @@ class H5RunFile : public RunFile {
 class JournaledH5RunFile : public RunFile {
  public:
   JournaledH5RunFile(const std::string& path, const RunDescription& d, int deflate,
-                     std::optional<std::uint64_t> resume_rows)
+                     std::optional<std::uint64_t> resume_rows, bool quiet)
       : path_(path),
         description_(d),
         deflate_(deflate),
+        quiet_(quiet),
         row_values_(5 + static_cast<std::uint64_t>(d.beads) * (d.psi ? 3 : 1)),
         rows_(resume_rows.value_or(0)),
         journal_(path, resume_rows ? std::optional(*resume_rows * row_bytes()) : std::nullopt) {}
@@ -225,7 +227,11 @@ class JournaledH5RunFile : public RunFile {
     at.h5_rows = rows_;
   }
   void commit() override {
-    sync_journal();
+    // Flushed, not fsynced: the file is written from it now and it is removed after; a crash
+    // before that resumes from the last checkpoint, whose rows were fsynced then.
+    if (journal_.flush() != rows_ * row_bytes())
+      throw OutputError(path_ + ": the journal " + journal_.partial() + " is not " +
+                        std::to_string(rows_) + " rows long");
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> in(std::fopen(journal_.partial().c_str(), "rb"),
                                                        std::fclose);
     if (!in) throw OutputError(path_ + ": cannot read back its journal " + journal_.partial());
@@ -236,7 +242,11 @@ class JournaledH5RunFile : public RunFile {
     RunRow row;
     row.phi = &phi;
     if (description_.psi) row.psi = &psi, row.vel = &vel;
+    // A long run's journal is gigabytes: the same progress line as the run's.
+    Progress progress("writing " + path_ + " from its journal", static_cast<double>(rows_), quiet_,
+                      "rows");
     for (std::uint64_t i = 0; i < rows_; ++i) {
+      progress.update(static_cast<double>(i));
       read(in.get(), head);
       read(in.get(), phi);
       read(in.get(), psi);
@@ -256,10 +266,6 @@ class JournaledH5RunFile : public RunFile {
   void write(const double* values, std::size_t count) {
     journal_.write({reinterpret_cast<const char*>(values), count * sizeof(double)});
   }
-  void sync_journal() {
-    OutputsAt at;
-    sync(at);
-  }
   void read(std::FILE* in, std::vector<double>& values) const {
     if (!values.empty() && std::fread(values.data(), sizeof(double), values.size(), in) !=
                                values.size())
@@ -268,6 +274,7 @@ class JournaledH5RunFile : public RunFile {
   std::string path_;
   RunDescription description_;
   int deflate_;
+  bool quiet_;
   std::uint64_t row_values_, rows_;
   std::int64_t max_rows_ = 1;
   RunOutcome outcome_;
@@ -299,8 +306,9 @@ std::unique_ptr<RunFile> h5_run_file(const std::string& path, const RunDescripti
 
 std::unique_ptr<RunFile> resumable_h5_run_file(const std::string& path,
                                                const RunDescription& description, int deflate,
-                                               std::optional<std::uint64_t> resume_rows) {
-  return std::make_unique<JournaledH5RunFile>(path, description, deflate, resume_rows);
+                                               std::optional<std::uint64_t> resume_rows,
+                                               bool quiet) {
+  return std::make_unique<JournaledH5RunFile>(path, description, deflate, resume_rows, quiet);
 }
 
 namespace {

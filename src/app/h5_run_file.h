@@ -33,10 +33,12 @@ std::unique_ptr<RunFile> h5_run_file(const std::string& path, const RunDescripti
 // rows go to a journal, "<dir>/.<name>.resume", which a checkpoint makes durable and a resumed
 // run (resume_rows) cuts back to the checkpoint's rows, after SIGTERM or SIGKILL alike; the
 // HDF5 file is written from it when the run ends, the same bytes as h5_run_file's. Throws
-// OutputError when the journal is missing or shorter than the checkpoint says.
+// OutputError when the journal is missing or shorter than the checkpoint says. Writing the
+// file shows progress on stderr unless `quiet`.
 std::unique_ptr<RunFile> resumable_h5_run_file(const std::string& path,
                                                const RunDescription& description, int deflate,
-                                               std::optional<std::uint64_t> resume_rows);
+                                               std::optional<std::uint64_t> resume_rows,
+                                               bool quiet);
 
 // The shape of a dataset's chunks: rows along time, columns along the chain.
 struct ChunkShape {

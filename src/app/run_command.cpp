@@ -200,7 +200,8 @@ int run_loaded(const RunOptions& o, const SceneDesc& scene, const Checkpoint* re
     const RunDescription description = describe_run(scene, o.overrides, o.solver, o.every, o.psi);
     files.add(checkpointing
                   ? resumable_h5_run_file(o.h5, description, o.h5_deflate,
-                                          resume ? std::optional(resume->h5_rows) : std::nullopt)
+                                          resume ? std::optional(resume->h5_rows) : std::nullopt,
+                                          o.quiet)
                   : h5_run_file(o.h5, description, o.h5_deflate));
   }
   std::unique_ptr<Checkpointer> checkpointer;

@@ -50,11 +50,20 @@ void ResumableFile::write(std::string_view text) {
 }
 
 std::uint64_t ResumableFile::sync() {
-  if (failed_ || std::fflush(file_) != 0 || ::fsync(::fileno(file_)) != 0)
-    throw OutputError(path_ + ": writing " + partial_ + " failed (" + std::strerror(errno) +
-                      "); free some space or choose another directory");
+  const std::uint64_t at = flush();
+  if (::fsync(::fileno(file_)) != 0) fail();
+  return at;
+}
+
+std::uint64_t ResumableFile::flush() {
+  if (failed_ || std::fflush(file_) != 0) fail();
   const long at = std::ftell(file_);
   return at < 0 ? 0 : static_cast<std::uint64_t>(at);
+}
+
+void ResumableFile::fail() const {
+  throw OutputError(path_ + ": writing " + partial_ + " failed (" + std::strerror(errno) +
+                    "); free some space or choose another directory");
 }
 
 void ResumableFile::commit() {

@@ -24,11 +24,15 @@ class ResumableFile {
 
   void write(std::string_view text);
   std::uint64_t sync();  // flush and fsync; returns the length so far. Throws OutputError
+  // Flush to the kernel only (no fsync): the length so far, for a reader of the partial file
+  // that needs no durability. Throws OutputError
+  std::uint64_t flush();
   void commit();         // sync, rename into place
   void discard();        // removes the partial file (a run that failed)
   const std::string& partial() const { return partial_; }
 
  private:
+  [[noreturn]] void fail() const;  // OutputError with errno's reason
   std::string path_, partial_;
   std::FILE* file_ = nullptr;
   bool failed_ = false;
