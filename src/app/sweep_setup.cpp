@@ -1,6 +1,7 @@
 #include "app/sweep_setup.h"
 
 #include <algorithm>
+#include <exception>
 #include <filesystem>
 #include <thread>
 
@@ -58,8 +59,8 @@ std::string axis_origin(const GridAxis& axis, double value) {
 }
 
 // What one point's scene holds, by the base scene: the struct, its strings (a string's
-// heap block when it outgrows the 15 characters held in place) and arrays, and a node of
-// about 64 bytes per key of its origins map.
+// heap block when it outgrows the 15 characters held in place) and arrays, and about 64 bytes
+// per key of its origins (counting the map the points share as each point's: an upper bound).
 double scene_bytes(const SceneDesc& s) {
   const auto text = [](const std::string& t) { return t.size() > 15 ? t.size() + 1.0 : 0.0; };
   double bytes = sizeof(SceneDesc);
@@ -67,7 +68,9 @@ double scene_bytes(const SceneDesc& s) {
                         &s.render.caption, &s.drive.table_file, &s.drive.expr})
     bytes += text(*t);
   bytes += 8.0 * (s.drive.times.size() + s.drive.strengths.size()) + 16.0 * s.drive.table.size();
-  for (const auto& [key, where] : s.origins) bytes += 64 + text(key) + text(where);
+  s.origins.for_each([&](const std::string& key, const std::string& where) {
+    bytes += 64 + text(key) + text(where);
+  });
   return bytes;
 }
 
@@ -77,17 +80,41 @@ std::vector<SceneDesc> point_scenes(const SweepOptions& o, const Grid& grid, Poi
   // The file is read and parsed once; each point's values are set in memory and validated
   // (issue #12: sweep used to parse the whole file again for every value).
   const SceneVariations variations(o.scene, o.overrides);
-  std::vector<SceneDesc> scenes;
-  scenes.reserve(range.size());
-  std::vector<NumberSetting> settings;
-  for (std::size_t i = range.first; i < range.last; ++i) {
-    const auto values = grid.point(i);
-    settings.clear();
-    for (std::size_t k = 0; k < values.size(); ++k)
-      settings.push_back({grid.axes[k].key, values[k], axis_origin(grid.axes[k], values[k])});
-    scenes.push_back(variations.with(settings));
-    check_sweep_scene(scenes.back(), o.solver);
-  }
+  const std::size_t count = range.size();
+  std::vector<SceneDesc> scenes(count);
+  // On the sweep's threads, each a contiguous slice (10^4 seeds are 3x10^5 threshold draws,
+  // issue #23). Each slice stops at its first bad point; the first of those in grid order is
+  // reported, as one thread would have.
+  constexpr std::size_t kPointsPerThread = 512;
+  const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
+  const std::size_t threads = std::clamp<std::size_t>(
+      std::min(o.jobs > 0 ? static_cast<std::size_t>(o.jobs) : cores, count / kPointsPerThread),
+      1, count > 0 ? count : 1);
+  std::vector<std::size_t> first_bad(threads, count);
+  std::vector<std::exception_ptr> errors(threads);
+  auto build = [&](std::size_t t) {
+    std::vector<NumberSetting> settings;
+    for (std::size_t i = count * t / threads; i < count * (t + 1) / threads; ++i) {
+      try {
+        const auto values = grid.point(range.first + i);
+        settings.clear();
+        for (std::size_t k = 0; k < values.size(); ++k)
+          settings.push_back({grid.axes[k].key, values[k], axis_origin(grid.axes[k], values[k])});
+        scenes[i] = variations.with(settings);
+        check_sweep_scene(scenes[i], o.solver);
+      } catch (...) {
+        first_bad[t] = i;
+        errors[t] = std::current_exception();
+        return;
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(build, t);
+  build(0);
+  for (auto& t : pool) t.join();
+  const auto bad = std::min_element(first_bad.begin(), first_bad.end());
+  if (*bad < count) std::rethrow_exception(errors[static_cast<std::size_t>(bad - first_bad.begin())]);
   return scenes;
 }
 

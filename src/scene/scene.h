@@ -8,9 +8,12 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "drive/drive.h"
@@ -75,7 +78,34 @@ struct RenderDesc {
 // "scenes/x.toml:3:9" or "--set chain.gamma=-1"; a section ("chain") -> where its table
 // starts; "" -> the file itself. Empty for a scene built in memory (the viewer's edits, the
 // Python module): messages then start at the key's name.
-using KeyOrigins = std::map<std::string, std::string, std::less<>>;
+// Copies share the reader's map and hold only the keys set since (scene_edit.cpp): a sweep's
+// ten thousand points are ten thousand copies of one scene, and copying the whole map for each
+// was a third of a 10^4-seed sweep's time (issue #23).
+class KeyOrigins {
+ public:
+  using Map = std::map<std::string, std::string, std::less<>>;
+  KeyOrigins() = default;
+  explicit KeyOrigins(Map read);
+  // Where `key`'s value came from, or null when nothing says.
+  const std::string* find(std::string_view key) const;
+  bool contains(std::string_view key) const { return find(key) != nullptr; }
+  const std::string& at(std::string_view key) const;  // std::out_of_range when nothing says
+  bool empty() const { return set_.empty() && (!read_ || read_->empty()); }
+  void set(const std::string& key, const std::string& where);
+  void clear() { *this = KeyOrigins(); }
+  // Calls f(key, where) for each key, those set since first (a key set since may come again
+  // from the map, with its old origin: for estimates only).
+  template <class F>
+  void for_each(F f) const {
+    for (const auto& [key, where] : set_) f(key, where);
+    if (read_)
+      for (const auto& [key, where] : *read_) f(key, where);
+  }
+
+ private:
+  std::shared_ptr<const Map> read_;                         // the reader's, shared by copies
+  std::vector<std::pair<std::string, std::string>> set_;  // set since; looked up first
+};
 
 // chain.threshold_dist, chain.threshold_shape, chain.seed as the scene gave them (issue #23):
 // the scene writer writes these three lines back instead of N drawn numbers.

@@ -100,7 +100,7 @@ bool assign_number(SceneDesc& next, const std::string& key, double value,
     next.integrator.after_break = c.time(value);
   } else if (key == "chain.gamma") {
     // With units.friction given, gamma follows from it and the reader must settle the two.
-    if (next.units && next.origins.count("units.friction")) return false;
+    if (next.units && next.origins.contains("units.friction")) return false;
     next.chain.gamma = value;
     if (next.units) next.units->friction = value * 2.0 * next.units->mass * next.units->omega0();
   } else {
@@ -110,7 +110,7 @@ bool assign_number(SceneDesc& next, const std::string& key, double value,
     if (!found) return false;
     *found->field(next) = converted(c, found->quantity, value);
   }
-  next.origins[key] = origin;
+  next.origins.set(key, origin);
   return true;
 }
 
@@ -121,13 +121,23 @@ bool set_scene_number(SceneDesc& scene, const std::string& key, double value,
   return set_scene_numbers(scene, {{key, value, origin}});
 }
 
-bool set_scene_numbers(SceneDesc& scene, const std::vector<NumberSetting>& settings) {
-  SceneDesc next = scene;
+namespace {
+
+// set_scene_numbers on a scene the caller throws away when it returns false or throws.
+bool set_numbers_of_copy(SceneDesc& copy, const std::vector<NumberSetting>& settings) {
   for (const NumberSetting& s : settings)
-    if (!assign_number(next, s.key, s.value, s.origin)) return false;
+    if (!assign_number(copy, s.key, s.value, s.origin)) return false;
   // Checked once all are set: values that only fit together (N and dt) are not refused
   // half way.
-  validate(next);
+  validate(copy);
+  return true;
+}
+
+}  // namespace
+
+bool set_scene_numbers(SceneDesc& scene, const std::vector<NumberSetting>& settings) {
+  SceneDesc next = scene;
+  if (!set_numbers_of_copy(next, settings)) return false;
   scene = std::move(next);
   return true;
 }
@@ -154,8 +164,8 @@ SceneDesc SceneVariations::with(const std::string& key, double value,
 
 SceneDesc SceneVariations::with(const std::vector<NumberSetting>& settings) const {
   if (base_) {
-    SceneDesc scene = *base_;
-    if (set_scene_numbers(scene, settings)) return scene;
+    SceneDesc scene = *base_;  // the one copy a point costs
+    if (set_numbers_of_copy(scene, settings)) return scene;
   }
   auto overrides = overrides_;
   for (const NumberSetting& s : settings)

@@ -231,12 +231,12 @@ std::string SceneReader::section_where(std::string_view section) const {
 }
 
 KeyOrigins SceneReader::origins() const {
-  KeyOrigins out;
+  KeyOrigins::Map out;
   out[""] = path_ + ":1:1";
   for (std::string_view section : kSections) out[std::string(section)] = section_where(section);
   for (const KeySpec& k : kSchema)
     if (has(k.section, k.key)) out[dotted(k.section, k.key)] = where(k.section, k.key);
-  return out;
+  return KeyOrigins(std::move(out));
 }
 
 void SceneReader::fail(std::string_view section, std::string_view key,

@@ -67,14 +67,14 @@ class Checker {
 
   // "section.key" -> where its value came from, or its section's start for a default.
   std::string where(const std::string& key) const {
-    const auto& o = scene_.origins;
-    if (auto it = o.find(key); it != o.end()) return it->second;
-    if (auto it = o.find(key.substr(0, key.find('.'))); it != o.end()) return it->second;
-    if (auto it = o.find(""); it != o.end()) return it->second;
+    const KeyOrigins& o = scene_.origins;
+    for (std::string_view k : {std::string_view(key), std::string_view(key).substr(0, key.find('.')),
+                               std::string_view()})
+      if (const std::string* where = o.find(k)) return *where;
     return {};
   }
   bool given(const std::string& key) const {
-    return scene_.origins.empty() || scene_.origins.count(key) > 0;
+    return scene_.origins.empty() || scene_.origins.contains(key);
   }
 
   // Notes a problem of `key` (once: a key with a problem already says nothing more).
