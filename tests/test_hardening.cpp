@@ -301,6 +301,24 @@ TEST_CASE("sweep values are checked in memory with the --vary named", "[hardenin
   CHECK(dir.names().empty());
 }
 
+TEST_CASE("a sweep built on several threads reports its first bad point in grid order",
+          "[hardening][cli]") {
+  // Issue #23: the points are built in slices on the sweep's threads (app/sweep_setup.cpp).
+  // With 2000 points on 2 threads, a bad value in each slice: the one at point 700 is named,
+  // as one thread going through the grid would name it, not the one at point 1500.
+  cb::test::TempDir dir;
+  std::string values;
+  for (int i = 0; i < 2000; ++i)
+    values += (i ? "," : "") + std::string(i == 700 ? "-0.7" : i == 1500 ? "-1.5" : "0.01");
+  const auto bad = run_chainbreak("sweep " + scene_file("anomalous_breaking.toml") +
+                                  " --jobs 2 --values chain.gamma=" + values + " --csv " +
+                                  dir.file("s.csv"));
+  CHECK(bad.status == 2);
+  CHECK_THAT(bad.err, Contains("chain.gamma must be >= 0") && Contains("got -0.7"));
+  CHECK_THAT(bad.err, !Contains("got -1.5"));
+  CHECK(dir.names().empty());
+}
+
 TEST_CASE("rows 5-6: render --speed 1e-300 and 1e-6 are refused before planning",
           "[hardening][cli]") {
   for (const char* speed : {"1e-300", "1e-6"}) {
