@@ -1,4 +1,4 @@
-// Instanced bead: a screen-aligned square around each centre, shaded as a disc in disc.frag.
+// A bead: a screen-aligned square around each centre, shaded as a disc in disc.frag.
 layout(location = LOC_CORNER) in vec2 corner;  // -1..1 in both directions
 layout(location = LOC_CENTER) in vec3 center;  // x, y, radius in pixels
 layout(location = LOC_COLOR) in vec4 color;

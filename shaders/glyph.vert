@@ -1,4 +1,4 @@
-// Instanced glyphs: a pixel rectangle of the frame textured with its glyph's coverage from
+// Glyphs: a pixel rectangle of the frame textured with its glyph's coverage from
 // the atlas (render/glyph_atlas.h). Rectangles sit on whole pixels and are the glyph's size,
 // so each texel lands on exactly one pixel: crisp, and the same wherever the text is.
 layout(location = LOC_CORNER) in vec2 corner;  // 0..1 in x and y

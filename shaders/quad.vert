@@ -1,4 +1,5 @@
-// Instanced thick line / rectangle in pixel coordinates (rects, segments, coils, text).
+// Thick line / rectangle in pixel coordinates (rects, segments, coils), a quad of four
+// vertices that each carry the segment's data (renderer.cpp, QuadBatch).
 // Interface names (LOC_*) are defined by the program from render/shader_interface.h.
 layout(location = LOC_CORNER) in vec2 corner;  // x: 0..1 along the segment, y: -1..1 across
 layout(location = LOC_ENDS) in vec4 ends;      // x0, y0, x1, y1 in pixels

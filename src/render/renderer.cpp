@@ -8,9 +8,9 @@
 
 #include "gl/gl_loader.h"
 #include "output/yuv420.h"
+#include "render/glyph_atlas.h"
 #include "render/shader_interface.h"
 #include "render/shader_program.h"
-#include "render/glyph_atlas.h"
 #include "text/text_layout.h"
 
 namespace cb {
@@ -87,30 +87,75 @@ void append_spring(const SpringInstance& s, std::vector<QuadInstance>& out) {
   out.push_back(segment_instance(px, py, s.x1, s.y1, line, s.color));
 }
 
-// A vertex array with a static unit-quad corner buffer and a streamed instance buffer.
-struct InstancedBatch {
-  GLuint vao = 0, corners = 0, instances = 0;
-  void create(const float* corner_data, int corner_count) {
+// Quads (segments, discs, glyphs) drawn as indexed triangles: four vertices a quad, each
+// carrying its corner of the unit quad and the whole quad's data. Why not instancing:
+// SwiftShader, which draws the page's WebGL on machines without a GPU, runs an instanced
+// draw once per instance, so the page's plots (thousands of segments and glyphs) cost
+// thousands of draws a frame: N = 1000 played at 31-43 frames/s, and at 60 once the same
+// quads went in one indexed draw a batch (tests/bench/README.md, session 12). A real GPU
+// or llvmpipe draws the indexed quads as fast. The two triangles of a quad are the
+// strip's, (0 1 2) and (2 1 3) in the order a strip gives them, so every pixel is what
+// the instanced strip drew (65 snapshots of the shipped scenes: the same PNG bytes).
+template <class Instance>
+struct QuadBatch {
+  struct Vertex {
+    float corner[2];
+    Instance data;
+  };
+  GLuint vao = 0, vertices = 0, indices = 0;
+  float corners[4][2] = {};
+  std::size_t index_quads = 0;   // quads the index buffer holds
+  std::vector<Vertex> expanded;  // scratch reused frame to frame
+
+  void create(const float (&corner_data)[8]) {
+    for (int k = 0; k < 4; ++k) {
+      corners[k][0] = corner_data[2 * k];
+      corners[k][1] = corner_data[2 * k + 1];
+    }
     glGenVertexArrays(1, &vao);
     glBindVertexArray(vao);
-    glGenBuffers(1, &corners);
-    glBindBuffer(GL_ARRAY_BUFFER, corners);
-    glBufferData(GL_ARRAY_BUFFER, corner_count * 2 * sizeof(float), corner_data, GL_STATIC_DRAW);
+    glGenBuffers(1, &indices);
+    glGenBuffers(1, &vertices);
+    glBindBuffer(GL_ARRAY_BUFFER, vertices);
     glEnableVertexAttribArray(shader::kCorner);
-    glVertexAttribPointer(shader::kCorner, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
-    glGenBuffers(1, &instances);
-    glBindBuffer(GL_ARRAY_BUFFER, instances);
+    glVertexAttribPointer(shader::kCorner, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex), nullptr);
   }
-  // Declares one per-instance float attribute of `size` floats at `offset` bytes.
-  void attribute(int location, int size, int stride, std::size_t offset) {
+  // Declares one float attribute of `size` floats at `offset` bytes into Instance.
+  void attribute(int location, int size, std::size_t offset) {
     glEnableVertexAttribArray(location);
-    glVertexAttribPointer(location, size, GL_FLOAT, GL_FALSE, stride,
-                          reinterpret_cast<void*>(offset));
-    glVertexAttribDivisor(location, 1);
+    glVertexAttribPointer(location, size, GL_FLOAT, GL_FALSE, sizeof(Vertex),
+                          reinterpret_cast<void*>(offsetof(Vertex, data) + offset));
+  }
+  // Draws `items` in order; the caller has chosen the program.
+  void draw(const std::vector<Instance>& items) {
+    if (items.empty()) return;
+    glBindVertexArray(vao);
+    if (items.size() > index_quads) grow_indices(std::max(items.size(), 2 * index_quads));
+    expanded.resize(4 * items.size());
+    for (std::size_t i = 0; i < items.size(); ++i)
+      for (int k = 0; k < 4; ++k)
+        expanded[4 * i + k] = Vertex{{corners[k][0], corners[k][1]}, items[i]};
+    glBindBuffer(GL_ARRAY_BUFFER, vertices);
+    // Orphan then fill: the driver need not wait for the previous frame's draw.
+    glBufferData(GL_ARRAY_BUFFER, expanded.size() * sizeof(Vertex), nullptr, GL_STREAM_DRAW);
+    glBufferSubData(GL_ARRAY_BUFFER, 0, expanded.size() * sizeof(Vertex), expanded.data());
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(6 * items.size()), GL_UNSIGNED_INT, nullptr);
+  }
+  void grow_indices(std::size_t quads) {
+    std::vector<GLuint> index(6 * quads);
+    for (std::size_t i = 0; i < quads; ++i) {
+      const GLuint v = static_cast<GLuint>(4 * i);
+      const GLuint order[6] = {v, v + 1, v + 2, v + 2, v + 1, v + 3};
+      std::copy(order, order + 6, &index[6 * i]);
+    }
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices);  // the bound vertex array keeps it
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, index.size() * sizeof(GLuint), index.data(),
+                 GL_STATIC_DRAW);
+    index_quads = quads;
   }
   void destroy() {
-    glDeleteBuffers(1, &corners);
-    glDeleteBuffers(1, &instances);
+    glDeleteBuffers(1, &vertices);
+    glDeleteBuffers(1, &indices);
     glDeleteVertexArrays(1, &vao);
   }
 };
@@ -122,7 +167,9 @@ struct Renderer::Impl {
   GLuint fbo = 0, color = 0;
   GLuint quad_program = 0, disc_program = 0, triangle_program = 0, glyph_program = 0;
   GLuint picture_program = 0, picture_texture = 0;
-  InstancedBatch quads, discs, glyphs;
+  QuadBatch<QuadInstance> quads;
+  QuadBatch<DiscInstance> discs;
+  QuadBatch<GlyphInstance> glyphs;
   GLuint atlas_texture = 0;
   GlyphAtlas atlas;
   GLuint triangle_vao = 0, triangle_buffer = 0;
@@ -152,24 +199,21 @@ struct Renderer::Impl {
     glUniform1i(glGetUniformLocation(picture_program, "u_picture"), 0);
 
     const float quad_corners[] = {0, -1, 1, -1, 0, 1, 1, 1};  // triangle strip
-    quads.create(quad_corners, 4);
-    const int qs = sizeof(QuadInstance);
-    quads.attribute(shader::kEnds, 4, qs, offsetof(QuadInstance, ends));
-    quads.attribute(shader::kColor, 4, qs, offsetof(QuadInstance, color));
-    quads.attribute(shader::kStyle, 2, qs, offsetof(QuadInstance, style));
+    quads.create(quad_corners);
+    quads.attribute(shader::kEnds, 4, offsetof(QuadInstance, ends));
+    quads.attribute(shader::kColor, 4, offsetof(QuadInstance, color));
+    quads.attribute(shader::kStyle, 2, offsetof(QuadInstance, style));
 
     const float disc_corners[] = {-1, -1, 1, -1, -1, 1, 1, 1};
-    discs.create(disc_corners, 4);
-    const int ds = sizeof(DiscInstance);
-    discs.attribute(shader::kCenter, 3, ds, offsetof(DiscInstance, center));
-    discs.attribute(shader::kColor, 4, ds, offsetof(DiscInstance, color));
+    discs.create(disc_corners);
+    discs.attribute(shader::kCenter, 3, offsetof(DiscInstance, center));
+    discs.attribute(shader::kColor, 4, offsetof(DiscInstance, color));
 
     const float glyph_corners[] = {0, 0, 1, 0, 0, 1, 1, 1};
-    glyphs.create(glyph_corners, 4);
-    const int gs = sizeof(GlyphInstance);
-    glyphs.attribute(shader::kRect, 4, gs, offsetof(GlyphInstance, rect));
-    glyphs.attribute(shader::kUv, 4, gs, offsetof(GlyphInstance, uv));
-    glyphs.attribute(shader::kColor, 4, gs, offsetof(GlyphInstance, color));
+    glyphs.create(glyph_corners);
+    glyphs.attribute(shader::kRect, 4, offsetof(GlyphInstance, rect));
+    glyphs.attribute(shader::kUv, 4, offsetof(GlyphInstance, uv));
+    glyphs.attribute(shader::kColor, 4, offsetof(GlyphInstance, color));
     glGenTextures(1, &atlas_texture);
     glGenTextures(1, &picture_texture);
     glBindTexture(GL_TEXTURE_2D, picture_texture);
@@ -248,9 +292,7 @@ struct Renderer::Impl {
   void draw_quads() {
     if (quad_data.empty()) return;
     use(quad_program);
-    glBindVertexArray(quads.vao);
-    upload(quads.instances, quad_data);
-    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(quad_data.size()));
+    quads.draw(quad_data);
     quad_data.clear();
   }
 
@@ -284,9 +326,7 @@ struct Renderer::Impl {
         disc_data.push_back(d);
       }
       use(disc_program);
-      glBindVertexArray(discs.vao);
-      upload(discs.instances, disc_data);
-      glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(disc_data.size()));
+      discs.draw(disc_data);
     }
 
     draw_labels(layer.labels);
@@ -303,9 +343,7 @@ struct Renderer::Impl {
                  p.rgba.data());
     glyph_data.assign(1, GlyphInstance{{p.x, p.y, p.w, p.h}, {0, 0, 1, 1}, {1, 1, 1, 1}});
     use(picture_program);
-    glBindVertexArray(glyphs.vao);
-    upload(glyphs.instances, glyph_data);
-    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, 1);
+    glyphs.draw(glyph_data);
   }
 
   // A label's glyphs on whole pixels: its `y` is the top of its capitals, so the baseline is
@@ -319,12 +357,12 @@ struct Renderer::Impl {
       for (const PlacedGlyph& g : line.glyphs) {
         const GlyphAtlas::Entry& e = atlas.glyph(l.face, g.c, g.px);
         if (e.width == 0 || e.height == 0) continue;
-        GlyphInstance gi{{x0 + static_cast<float>(g.x + e.left),
-                          baseline + static_cast<float>(g.dy + e.top),
-                          static_cast<float>(e.width), static_cast<float>(e.height)},
-                         {static_cast<float>(e.x), static_cast<float>(e.y),
-                          static_cast<float>(e.x + e.width), static_cast<float>(e.y + e.height)},
-                         {}};
+        GlyphInstance gi{
+            {x0 + static_cast<float>(g.x + e.left), baseline + static_cast<float>(g.dy + e.top),
+             static_cast<float>(e.width), static_cast<float>(e.height)},
+            {static_cast<float>(e.x), static_cast<float>(e.y), static_cast<float>(e.x + e.width),
+             static_cast<float>(e.y + e.height)},
+            {}};
         copy_color(l.color, gi.color);
         glyph_data.push_back(gi);
       }
@@ -351,9 +389,7 @@ struct Renderer::Impl {
       atlas.mark_uploaded();
     }
     use(glyph_program);
-    glBindVertexArray(glyphs.vao);
-    upload(glyphs.instances, glyph_data);
-    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(glyph_data.size()));
+    glyphs.draw(glyph_data);
   }
 };
 
