@@ -87,15 +87,24 @@ void append_spring(const SpringInstance& s, std::vector<QuadInstance>& out) {
   out.push_back(segment_instance(px, py, s.x1, s.y1, line, s.color));
 }
 
+// Streams `data` into `buffer`, orphaning it first: the driver need not wait for the previous
+// frame's draw.
+template <class T>
+void upload(GLuint buffer, const std::vector<T>& data) {
+  glBindBuffer(GL_ARRAY_BUFFER, buffer);
+  glBufferData(GL_ARRAY_BUFFER, data.size() * sizeof(T), nullptr, GL_STREAM_DRAW);
+  glBufferSubData(GL_ARRAY_BUFFER, 0, data.size() * sizeof(T), data.data());
+}
+
 // Quads (segments, discs, glyphs) drawn as indexed triangles: four vertices a quad, each
 // carrying its corner of the unit quad and the whole quad's data. Why not instancing:
 // SwiftShader, which draws the page's WebGL on machines without a GPU, runs an instanced
 // draw once per instance, so the page's plots (thousands of segments and glyphs) cost
 // thousands of draws a frame: N = 1000 played at 31-43 frames/s, and at 60 once the same
-// quads went in one indexed draw a batch (tests/bench/README.md, session 12). A real GPU
-// or llvmpipe draws the indexed quads as fast. The two triangles of a quad are the
-// strip's, (0 1 2) and (2 1 3) in the order a strip gives them, so every pixel is what
-// the instanced strip drew (65 snapshots of the shipped scenes: the same PNG bytes).
+// quads went in one indexed draw a batch (tests/bench/README.md, session 12); llvmpipe draws
+// them as fast as before (bench_render). The two triangles of a quad are the strip's,
+// (0 1 2) and (2 1 3) in the order a strip gives them, so every pixel is what the
+// instanced strip drew (65 snapshots of the shipped scenes: the same PNG bytes).
 template <class Instance>
 struct QuadBatch {
   struct Vertex {
@@ -135,10 +144,7 @@ struct QuadBatch {
     for (std::size_t i = 0; i < items.size(); ++i)
       for (int k = 0; k < 4; ++k)
         expanded[4 * i + k] = Vertex{{corners[k][0], corners[k][1]}, items[i]};
-    glBindBuffer(GL_ARRAY_BUFFER, vertices);
-    // Orphan then fill: the driver need not wait for the previous frame's draw.
-    glBufferData(GL_ARRAY_BUFFER, expanded.size() * sizeof(Vertex), nullptr, GL_STREAM_DRAW);
-    glBufferSubData(GL_ARRAY_BUFFER, 0, expanded.size() * sizeof(Vertex), expanded.data());
+    upload(vertices, expanded);
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(6 * items.size()), GL_UNSIGNED_INT, nullptr);
   }
   void grow_indices(std::size_t quads) {
@@ -280,14 +286,6 @@ struct Renderer::Impl {
                 static_cast<float>(height));
   }
   void use(GLuint program) { glUseProgram(program); }
-
-  template <class T>
-  static void upload(GLuint buffer, const std::vector<T>& data) {
-    glBindBuffer(GL_ARRAY_BUFFER, buffer);
-    // Orphan then fill: the driver need not wait for the previous frame's draw.
-    glBufferData(GL_ARRAY_BUFFER, data.size() * sizeof(T), nullptr, GL_STREAM_DRAW);
-    glBufferSubData(GL_ARRAY_BUFFER, 0, data.size() * sizeof(T), data.data());
-  }
 
   void draw_quads() {
     if (quad_data.empty()) return;
