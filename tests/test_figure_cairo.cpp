@@ -417,6 +417,22 @@ TEST_CASE("Figures: tick labels and the --format list", "[figures][ticks]") {
         std::vector<std::string>{"0.01", "0.02", "0.05", "0.1", "0.2", "0.5", "1", "2", "5", "10"});
   CHECK(l.values[3] == Approx(-1.0).margin(1e-12));
 
+  // The plots of the overlay and the page: the energy per particle, 0 to 6e-6, shares a
+  // power of ten shown once; time axes get SI suffixes past 1e4.
+  const cb::Ticks e = cb::nice_ticks(0.0, 6.5e-6, 4);
+  const cb::TickFormat ef = cb::tick_format(e);
+  CHECK(ef.exponent == -6);
+  CHECK(cb::tick_label(e.values.back(), ef) == "6");
+  CHECK(cb::tick_label(-2e-6, ef) == "\u22122");  // step 2e-6: no decimals
+  CHECK(cb::power_of_ten_text(ef.exponent) == "\u00D710\u207B\u2076");
+  CHECK(cb::power_of_ten_text(12) == "\u00D710\u00B9\u00B2");
+  CHECK(cb::tick_format(cb::nice_ticks(0.0, 10.0, 5)).exponent == 0);
+  const cb::Ticks tau = cb::nice_ticks(0.0, 60000.0, 5);  // step 20000
+  CHECK(cb::x_tick_label(40000.0, tau) == "40k");
+  CHECK(cb::x_tick_label(3000.0, cb::nice_ticks(0.0, 3000.0, 5)) == "3000");
+  CHECK(cb::x_tick_label(1.5e6, cb::nice_ticks(0.0, 2.5e6, 5)) == "1.5M");
+  CHECK(cb::x_tick_label(0.5, cb::nice_ticks(0.0, 2.0, 4)) == "0.5");
+
   using F = cb::FigureFormat;
   CHECK(cb::parse_figure_formats("png") == std::vector<F>{F::Png});
   CHECK(cb::parse_figure_formats("pdf,png,svg") == std::vector<F>{F::Pdf, F::Png, F::Svg});

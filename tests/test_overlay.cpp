@@ -307,6 +307,24 @@ TEST_CASE("Overlay layout: the chain's band on top, panels below it, apart", "[o
   CHECK(hud.chain_height > cb::overlay_layout(1920, 1080, all).chain_height);
 }
 
+TEST_CASE("Overlay layout: x tick labels stay in the panel and never touch", "[overlay]") {
+  const float font = 10.0f;
+  // Room for all: centred under their ticks; the last ends exactly half a font past the edge.
+  const auto roomy = cb::x_tick_label_lefts({0, 100, 200}, {10, 10, 10}, 200.0f, font);
+  CHECK(roomy == std::vector<float>{-5.0f, 95.0f, 195.0f});
+  // A wide last label would run past the edge: right-aligned at its tick.
+  const auto wide = cb::x_tick_label_lefts({0, 100, 200}, {10, 10, 30}, 200.0f, font);
+  CHECK(wide == std::vector<float>{-5.0f, 95.0f, 170.0f});
+  // Crowded ("800" against a right-aligned "1000", as on the page's space-time panel): the
+  // middle label would end 9 px into the last one's half-font gap, so it is left out; the
+  // first still clears it.
+  const auto crowded = cb::x_tick_label_lefts({0, 20, 40}, {16, 16, 16}, 40.0f, font);
+  REQUIRE(crowded.size() == 3);
+  CHECK(crowded[0] == -8.0f);
+  CHECK(std::isnan(crowded[1]));
+  CHECK(crowded[2] == 24.0f);
+}
+
 TEST_CASE("Overlay switches parse from --overlay lists", "[overlay]") {
   cb::OverlaySwitches s;
   std::string bad;

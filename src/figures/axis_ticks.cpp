@@ -8,17 +8,58 @@ namespace cb {
 
 namespace {
 
-// As many decimals as the step needs (0.25 -> 2), a true minus sign, no "-0".
-std::string tick_label(double value, double step) {
-  const int decimals = std::max(0, static_cast<int>(std::ceil(-std::log10(step) - 1e-9)));
+// As many decimals as the step needs (0.25 -> 2).
+int decimals_for(double step) {
+  return std::max(0, static_cast<int>(std::ceil(-std::log10(step) - 1e-9)));
+}
+
+std::string fixed(double value, int decimals, const char* suffix = "") {
   char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
-  const std::string s = buffer;
+  std::snprintf(buffer, sizeof buffer, "%.*f%s", decimals, value, suffix);
+  return buffer;
+}
+
+// A true minus sign, no "-0".
+std::string with_minus_sign(const std::string& s) {
   if (s.find_first_not_of("-0.") == std::string::npos) return s[0] == '-' ? s.substr(1) : s;
   return s[0] == '-' ? "\u2212" + s.substr(1) : s;
 }
 
+std::string tick_label(double value, double step) {
+  return with_minus_sign(fixed(value, decimals_for(step)));
+}
+
 }  // namespace
+
+TickFormat tick_format(const Ticks& t) {
+  TickFormat f;
+  double largest = 0;
+  for (double v : t.values) largest = std::max(largest, std::abs(v));
+  if (largest > 0 && (largest < 1e-2 || largest >= 1e4))
+    f.exponent = static_cast<int>(std::floor(std::log10(largest)));
+  f.decimals = decimals_for(t.step / std::pow(10.0, f.exponent));
+  return f;
+}
+
+std::string tick_label(double value, const TickFormat& f) {
+  return with_minus_sign(fixed(value / std::pow(10.0, f.exponent), f.decimals));
+}
+
+std::string power_of_ten_text(int exponent) {
+  static const char* const kSuperscript[10] = {"\u2070", "\u00B9", "\u00B2", "\u00B3", "\u2074",
+                                               "\u2075", "\u2076", "\u2077", "\u2078", "\u2079"};
+  std::string text = "\u00D710";
+  for (char c : std::to_string(exponent)) text += c == '-' ? "\u207B" : kSuperscript[c - '0'];
+  return text;
+}
+
+std::string x_tick_label(double value, const Ticks& t) {
+  if (std::abs(value) < 1e4 && t.step >= 1.0) return fixed(value, 0);
+  if (std::abs(value) < 1e4) return tick_label(value, tick_format(t));
+  const bool mega = std::abs(value) >= 1e6;
+  const double unit = mega ? 1e6 : 1e3;
+  return fixed(value / unit, decimals_for(t.step / unit), mega ? "M" : "k");
+}
 
 Ticks nice_ticks(double lo, double hi, int count) {
   Ticks t;

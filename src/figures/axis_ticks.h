@@ -27,4 +27,20 @@ Ticks axis_ticks(const Axis& axis, int count);
 // A data value in the mapping's units: log10(value) on a log axis.
 double axis_value(const Axis& axis, double value);
 
+// How the plots of a video's overlay and of the page write a linear axis' tick labels: very
+// small or large values (the largest under 1e-2 or from 1e4) share a power of ten, which the
+// axis shows once (power_of_ten_text), with as many decimals as the step needs.
+struct TickFormat {
+  int exponent = 0;  // labels are value / 10^exponent
+  int decimals = 0;
+};
+TickFormat tick_format(const Ticks& t);
+// value / 10^exponent, a true minus sign (U+2212), no "-0".
+std::string tick_label(double value, const TickFormat& f);
+// "×10⁻³" for -3.
+std::string power_of_ten_text(int exponent);
+// A time or spring axis has no room for a shared power of ten: whole numbers below 1e4 as
+// they are, larger values with an SI suffix (50k, 1.5M), smaller steps with their decimals.
+std::string x_tick_label(double value, const Ticks& t);
+
 }  // namespace cb

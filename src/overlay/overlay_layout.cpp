@@ -1,10 +1,12 @@
 #include "overlay/overlay_layout.h"
-#include "theme/fonts.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <vector>
+
+#include "theme/fonts.h"
 
 namespace cb {
 
@@ -128,6 +130,21 @@ Box plot_area(const Box& panel, float font_px, int header) {
   const float right = std::round(0.6f * font_px), bottom = std::round(1.6f * font_px);
   return Box{panel.x + left, panel.y + top, std::max(1.0f, panel.w - left - right),
              std::max(1.0f, panel.h - top - bottom)};
+}
+
+std::vector<float> x_tick_label_lefts(const std::vector<float>& x, const std::vector<float>& width,
+                                      float area_right, float font_px) {
+  const std::size_t n = std::min(x.size(), width.size());
+  std::vector<float> left(n, std::numeric_limits<float>::quiet_NaN());
+  float next_left = std::numeric_limits<float>::infinity();  // the label right of this one
+  for (std::size_t i = n; i-- > 0;) {
+    const bool past = x[i] + 0.5f * width[i] > area_right + 0.5f * font_px;
+    const float l = past ? x[i] - width[i] : x[i] - 0.5f * width[i];
+    if (l + width[i] > next_left - 0.5f * font_px) continue;
+    left[i] = l;
+    next_left = l;
+  }
+  return left;
 }
 
 PlotMapping phi_mapping(const OverlayLayout& layout, const OverlayData& d) {

@@ -8,6 +8,8 @@
 // frame is a 1080p frame at twice the scale.
 #pragma once
 
+#include <vector>
+
 #include "overlay/overlay_data.h"
 
 namespace cb {
@@ -36,6 +38,14 @@ OverlayLayout overlay_layout(int width, int height, const OverlaySwitches& switc
 // The data rectangle inside a plot panel: `header` text lines above (the title), tick labels
 // left and below.
 Box plot_area(const Box& panel, float font_px, int header = 1);
+
+// Where the x tick labels of a plot go, left to right, given each tick's x and its label's
+// width: centred under the tick, except a last label that would run past the area's right
+// edge by more than half a font, which is right-aligned at its tick so it stays in the panel;
+// and a label that would come within half a font of the label right of it is left out, so no
+// two touch (the end of the axis keeps its label). Each label's left edge, NaN when left out.
+std::vector<float> x_tick_label_lefts(const std::vector<float>& x, const std::vector<float>& width,
+                                      float area_right, float font_px);
 
 // Data to pixels: x0 .. x1 across the area, y0 at its bottom edge, y1 at its top edge.
 struct PlotMapping {

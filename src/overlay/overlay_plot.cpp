@@ -25,36 +25,6 @@ float distance2(const ImVec2& p, const ImVec2& a, const ImVec2& b) {
   return ex * ex + ey * ey;
 }
 
-// Tick labels; very small or large values share a power of ten shown once by the axis.
-struct TickFormat {
-  int exponent = 0;  // labels are value / 10^exponent
-  int decimals = 0;
-};
-TickFormat tick_format(const Ticks& t) {
-  TickFormat f;
-  double largest = 0;
-  for (double v : t.values) largest = std::max(largest, std::abs(v));
-  if (largest > 0 && (largest < 1e-2 || largest >= 1e4))
-    f.exponent = static_cast<int>(std::floor(std::log10(largest)));
-  const double step = t.step / std::pow(10.0, f.exponent);
-  f.decimals = std::max(0, static_cast<int>(std::ceil(-std::log10(step) - 1e-9)));
-  return f;
-}
-std::string tick_label(double v, const TickFormat& f) {
-  const std::string s = format("%.*f", f.decimals, v / std::pow(10.0, f.exponent));
-  return s == "-0" ? "0" : s[0] == '-' ? "\u2212" + s.substr(1) : s;  // a true minus sign
-}
-// The x axes (tau, springs) have no room for a shared power of ten: large values get an SI
-// suffix instead, 50k, 1.5M.
-std::string x_tick_label(double v, const Ticks& t) {
-  if (std::abs(v) < 1e4 && t.step >= 1.0) return format("%.0f", v);
-  if (std::abs(v) < 1e4) return tick_label(v, tick_format(t));
-  const bool mega = std::abs(v) >= 1e6;
-  const double scaled = v / (mega ? 1e6 : 1e3), step = t.step / (mega ? 1e6 : 1e3);
-  const int decimals = std::max(0, static_cast<int>(std::ceil(-std::log10(step) - 1e-9)));
-  return format("%.*f%s", decimals, scaled, mega ? "M" : "k");
-}
-
 }  // namespace
 
 ImU32 col(const OverlayRgb& c, float alpha) {
@@ -134,9 +104,10 @@ void dashed_vline(Canvas& c, float x, float y0, float y1, ImU32 colour, float wi
 void panel(Canvas& c, const Box& box, const std::string& title) {
   const float fs = c.layout.font_px;
   c.draw->AddRect(ImVec2(box.x + 0.5f, box.y + 0.5f),
-                  ImVec2(box.right() - 0.5f, box.bottom() - 0.5f), col(c.theme.border), 0.3f * fs, 0,
-                  1.0f);
-  c.title_right = text_sub(c, c.fonts.bold, box.x + 0.45f * fs, box.y + 0.3f * fs, c.theme.text, title);
+                  ImVec2(box.right() - 0.5f, box.bottom() - 0.5f), col(c.theme.border), 0.3f * fs,
+                  0, 1.0f);
+  c.title_right =
+      text_sub(c, c.fonts.bold, box.x + 0.45f * fs, box.y + 0.3f * fs, c.theme.text, title);
 }
 
 // A small note right-aligned in the title row; false (nothing drawn) when it would touch the
@@ -165,27 +136,30 @@ void axes(Canvas& c, const Box& box, const PlotMapping& m, const Ticks& xt, cons
     const std::string label = yt.labels.empty() ? tick_label(v, yf) : yt.labels[i];
     text(c, c.fonts.sans, a.x - 0.3f * fs, y - 0.55f * fs, c.theme.text_dim, label, 1.0f, 0.85f);
   }
+  std::vector<float> xs, widths;
+  std::vector<std::string> labels;
   for (std::size_t i = 0; i < xt.values.size(); ++i) {
     const double v = xt.values[i];
     const float x = std::round(m.px(v)) + 0.5f;
     if (grid) c.draw->AddLine(ImVec2(x, a.y), ImVec2(x, a.bottom()), col(c.theme.grid), 1.0f);
-    // The last label may not run past the panel: right-align it at the edge.
-    const std::string label = xt.labels.empty() ? x_tick_label(v, xt) : xt.labels[i];
-    const float w = text_width(c.fonts.mono, 0.85f * fs, label);
-    const float align = x + 0.5f * w > a.right() + 0.5f * fs ? 1.0f : 0.5f;
-    text(c, c.fonts.sans, x, a.bottom() + 0.2f * fs, c.theme.text_dim, label, align, 0.85f);
+    labels.push_back(xt.labels.empty() ? x_tick_label(v, xt) : xt.labels[i]);
+    xs.push_back(x);
+    widths.push_back(text_width(c.fonts.sans, 0.85f * fs, labels.back()));
   }
-  c.draw->AddRect(ImVec2(a.x, a.y), ImVec2(a.right(), a.bottom()), col(c.theme.axis), 0.0f, 0, 1.0f);
-  text(c, c.fonts.sans, box.x + 0.45f * fs, a.bottom() + 0.2f * fs, c.theme.text_dim, x_name, 0.0f, 0.85f);
+  const std::vector<float> lefts = x_tick_label_lefts(xs, widths, a.right(), fs);
+  for (std::size_t i = 0; i < labels.size(); ++i)
+    if (!std::isnan(lefts[i]))
+      text(c, c.fonts.sans, lefts[i], a.bottom() + 0.2f * fs, c.theme.text_dim, labels[i], 0.0f,
+           0.85f);
+  c.draw->AddRect(ImVec2(a.x, a.y), ImVec2(a.right(), a.bottom()), col(c.theme.axis), 0.0f, 0,
+                  1.0f);
+  text(c, c.fonts.sans, box.x + 0.45f * fs, a.bottom() + 0.2f * fs, c.theme.text_dim, x_name, 0.0f,
+       0.85f);
   if (yf.exponent != 0 && yt.labels.empty()) {  // "×10⁻³" above the y labels
-    std::string e = "\u00D710";
-    for (char ch : std::to_string(yf.exponent)) {
-      static const char* const kSup[10] = {"\u2070", "\u00B9", "\u00B2", "\u00B3", "\u2074",
-                                           "\u2075", "\u2076", "\u2077", "\u2078", "\u2079"};
-      e += ch == '-' ? "\u207B" : kSup[ch - '0'];
-    }
+    const std::string e = power_of_ten_text(yf.exponent);
     if (!title_note(c, box, e))  // else inside the plot's top-right corner
-      text(c, c.fonts.sans, a.right() - 0.3f * fs, a.y + 0.2f * fs, c.theme.text_dim, e, 1.0f, 0.8f);
+      text(c, c.fonts.sans, a.right() - 0.3f * fs, a.y + 0.2f * fs, c.theme.text_dim, e, 1.0f,
+           0.8f);
   }
 }
 

@@ -4,11 +4,12 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <string>
+#include <vector>
 
 #include "figures/axis_ticks.h"
 #include "snapshot/snapshot_internal.h"
+#include "text/text_layout.h"
 #include "theme/theme.h"
 
 namespace cb {
@@ -16,13 +17,6 @@ namespace cb {
 namespace {
 
 using snapshot_detail::to_color;
-
-std::string tick_text(double v, double step) {
-  char buf[32];
-  const int decimals = step >= 1 ? 0 : std::min(6, static_cast<int>(std::ceil(-std::log10(step))));
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, std::abs(v) < 1e-12 * step ? 0.0 : v);
-  return buf;
-}
 
 class Painter {
  public:
@@ -58,31 +52,51 @@ class Painter {
            c, width, alpha);
     }
   }
-  // Panel, frame, ticks on both axes and a title line.
+  // Panel, frame, ticks on both axes and a title line, laid out as the video's overlay lays
+  // out its plots (overlay_plot.cpp, axes) with the same labels (figures/axis_ticks.h): the
+  // y labels right-aligned left of the area, a power of ten they share at the right of the
+  // title row, the x labels placed by x_tick_label_lefts, and `x_name` in the corner below
+  // the y labels, where no tick label is.
   void axes(const Box& panel, const PlotMapping& m, const std::string& title,
             const std::string& x_name) {
     rect(panel, theme_.panel);
     const Box& a = m.area;
+    const float label_px = font_px_ * 0.85f;
     text(title, panel.x + font_px_ * 0.5f, panel.y + font_px_ * 0.4f, theme_.text);
-    for (const bool x_axis : {true, false}) {
-      const Ticks t = x_axis ? nice_ticks(m.x0, m.x1, 5)
-                             : nice_ticks(std::min(m.y0, m.y1), std::max(m.y0, m.y1), 4);
-      for (double v : t.values) {
-        const std::string s = tick_text(v, t.step);
-        if (x_axis) {
-          const float x = m.px(v);
-          line(x, a.y, x, a.bottom(), theme_.grid, 1.0f);
-          text(s, x - font_px_ * 0.3f * static_cast<float>(s.size()), a.bottom() + font_px_ * 0.4f,
-               theme_.text_dim, 0.85f);
-        } else {
-          const float y = m.py(v);
-          line(a.x, y, a.right(), y, theme_.grid, 1.0f);
-          text(s, a.x - font_px_ * (0.6f * static_cast<float>(s.size()) + 0.4f),
-               y - font_px_ * 0.35f, theme_.text_dim, 0.85f);
-        }
-      }
+    const Ticks yt = nice_ticks(std::min(m.y0, m.y1), std::max(m.y0, m.y1), 4);
+    const TickFormat yf = tick_format(yt);
+    for (double v : yt.values) {
+      const float y = m.py(v);
+      line(a.x, y, a.right(), y, theme_.grid, 1.0f);
+      const std::string s = tick_label(v, yf);
+      text(s, a.x - font_px_ * 0.3f - text_width(s, label_px), y - font_px_ * 0.35f,
+           theme_.text_dim, 0.85f);
     }
-    text(x_name, a.right() - font_px_, a.bottom() + font_px_ * 0.4f, theme_.text_dim, 0.85f);
+    const Ticks xt = nice_ticks(m.x0, m.x1, 5);
+    std::vector<float> xs, widths;
+    std::vector<std::string> labels;
+    for (double v : xt.values) {
+      xs.push_back(m.px(v));
+      line(xs.back(), a.y, xs.back(), a.bottom(), theme_.grid, 1.0f);
+      labels.push_back(x_tick_label(v, xt));
+      widths.push_back(text_width(labels.back(), label_px));
+    }
+    const std::vector<float> lefts = x_tick_label_lefts(xs, widths, a.right(), font_px_);
+    for (std::size_t i = 0; i < labels.size(); ++i)
+      if (!std::isnan(lefts[i]))
+        text(labels[i], lefts[i], a.bottom() + font_px_ * 0.4f, theme_.text_dim, 0.85f);
+    text(x_name, panel.x + font_px_ * 0.45f, a.bottom() + font_px_ * 0.4f, theme_.text_dim, 0.85f);
+    if (yf.exponent != 0) {
+      const std::string e = power_of_ten_text(yf.exponent);
+      const float title_right =
+          panel.x + font_px_ * 0.5f + text_width(title, font_px_) + font_px_ * 0.6f;
+      const float e_left = panel.right() - font_px_ * 0.45f - text_width(e, label_px);
+      if (e_left >= title_right)  // else inside the plot's top-right corner
+        text(e, e_left, panel.y + font_px_ * 0.4f, theme_.text_dim, 0.85f);
+      else
+        text(e, a.right() - font_px_ * 0.3f - text_width(e, label_px), a.y + font_px_ * 0.3f,
+             theme_.text_dim, 0.85f);
+    }
     for (const auto& [x0, y0, x1, y1] :
          {std::array<float, 4>{a.x, a.y, a.right(), a.y},
           std::array<float, 4>{a.x, a.bottom(), a.right(), a.bottom()},
