@@ -2,9 +2,11 @@
 // own, for the web page's canvas) and reads it back as an Image. It sees only the snapshot:
 // never the physics state or the scene.
 //
-// Design note: each layer is drawn back to front; every shape kind is one instanced draw
-// from a per-frame instance buffer (sokol's habit): rectangles, segments, coils and text
-// share one "quad" program, beads use the "disc" program, arrow heads the "triangle" one.
+// Design note: each layer is drawn back to front; every shape kind is one draw from a
+// per-frame vertex buffer, four vertices a shape with the shape's data in each and one index
+// buffer (not instancing: SwiftShader runs an instanced draw once per instance; renderer.cpp,
+// QuadBatch): rectangles, segments and coils share one "quad" program, beads use the "disc"
+// program, text the "glyph" one, arrow heads the "triangle" one.
 #pragma once
 
 #include <memory>

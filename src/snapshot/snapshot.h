@@ -78,7 +78,7 @@ struct Picture {
 };
 
 // One drawing layer; layers are drawn in order (back to front), each shape kind in one
-// instanced call (pictures, one call each, right after the layer's rects and segments).
+// draw call (pictures, one call each, right after the layer's rects and segments).
 struct Layer {
   std::vector<Rect> rects;
   std::vector<Segment> segments;
