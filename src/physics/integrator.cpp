@@ -632,6 +632,14 @@ bool Integrator::settle_interval(double ta, double tb, bool end_is_breakpoint) {
   }
 }
 
+void Integrator::widen_bounds(int spring, double upper, double lower) {
+  assert(watch_ && coef_.per_bead && spring >= 1 && spring <= params_.beads);
+  const auto j = static_cast<std::size_t>(spring - 1);
+  assert(upper >= coef_.upper[j] && lower <= coef_.lower[j]);
+  coef_.upper[j] = upper;
+  coef_.lower[j] = lower;
+}
+
 void Integrator::break_spring(int spring, double tau) {
   state_.breaks.push_back({spring, tau, state_.step + 1});
   if (spring == 0) {
@@ -817,8 +825,7 @@ Integrator::Cursor Integrator::cursor() const {
 }
 
 void Integrator::restore(const ChainState& integrated, const Cursor& cursor) {
-  assert(integrated.psi.size() == state_.psi.size() &&
-         integrated.vel.size() == state_.vel.size());
+  assert(integrated.psi.size() == state_.psi.size() && integrated.vel.size() == state_.vel.size());
   // Copied into the arrays made at construction (zero_array's pages), not swapped for others.
   std::copy(integrated.psi.begin(), integrated.psi.end(), state_.psi.begin());
   std::copy(integrated.vel.begin(), integrated.vel.end(), state_.vel.begin());

@@ -145,6 +145,11 @@ class Integrator {
   using CrossingWatch =
       std::function<void(const std::vector<detail::Candidate>&, double ta, double tb)>;
   void watch_crossings(CrossingWatch watch) { watch_ = std::move(watch); }
+  // A watched run's bounds of `spring` (1..N) move outward as the ensemble's members settle
+  // (upper up, lower down; the PerBead policy only): the kernels then collect fewer candidates,
+  // and none that a member whose bounds lie outside these could trip (stencil.inc's tests are
+  // monotone in the bounds). Read by the next step's kernel.
+  void widen_bounds(int spring, double upper, double lower);
 
  private:
   struct Impl;

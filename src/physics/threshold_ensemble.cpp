@@ -70,8 +70,10 @@ class Ensemble {
       std::vector<int> fill(b.start.begin(), b.start.end() - 1);
       for (int m = 0; m < members_; ++m)
         b.members[static_cast<std::size_t>(fill[b.of(column[static_cast<std::size_t>(m)])]++)] = m;
-      b.loosest = lo;
     }
+    bound_.assign(static_cast<std::size_t>(n_), std::numeric_limits<double>::infinity());
+    holder_.resize(static_cast<std::size_t>(n_));
+    for (int j = 1; j <= n_; ++j) raise_bound(j);
     open_ = members_;
   }
 
@@ -83,8 +85,7 @@ class Ensemble {
     ChainParams p = shared;
     p.thresholds.assign(static_cast<std::size_t>(n_), std::numeric_limits<double>::infinity());
     for (int j = 1; j <= n_; ++j)
-      p.thresholds[static_cast<std::size_t>(j - 1)] =
-          buckets_[static_cast<std::size_t>(j - 1)].loosest;
+      p.thresholds[static_cast<std::size_t>(j - 1)] = bound_[static_cast<std::size_t>(j - 1)];
     p.threshold = *std::min_element(p.thresholds.begin(), p.thresholds.end());
     p.normalize();
     return p;
@@ -97,6 +98,10 @@ class Ensemble {
     ++visit_;
     touched_.clear();
     for (const detail::Candidate& c : candidates) {
+      // A bound whose member has settled rises here, where it is needed: raising every spring's
+      // bound at each settle cost a fast pull (springs the wave never reaches) a fifth more.
+      const int holder = holder_[static_cast<std::size_t>(c.spring - 1)];
+      if (holder >= 0 && settled_[static_cast<std::size_t>(holder)]) raise_bound(c.spring);
       // A member trips spring j (stencil.inc's may_cross_between with (phi_c, -phi_c) or
       // (phi_c, -inf)) only if phi_c <= max(|p0|, |p1|) + s: each side's sum is at most this one
       // (rounding is monotone), so the walk below misses no member the bound would test.
@@ -106,20 +111,24 @@ class Ensemble {
       Buckets& b = buckets_[j];
       const std::size_t last = b.of(reach);
       for (std::size_t k = b.first; k <= last && k < b.count; ++k) {
-        bool all_settled = true;
         for (int e = b.start[k]; e < b.start[k + 1]; ++e) {
           const int member = b.members[static_cast<std::size_t>(e)];
           const auto m = static_cast<std::size_t>(member);
-          if (settled_[m]) continue;
-          all_settled = false;
-          if (seen_[m] == visit_ || phi(member, c.spring) > reach) continue;
+          if (settled_[m] || seen_[m] == visit_ || phi(member, c.spring) > reach) continue;
           seen_[m] = visit_;
           touched_.push_back(member);
         }
-        if (all_settled && k == b.first) ++b.first;  // never scanned again
       }
     }
     for (const int m : touched_) settle(m, candidates, slack, ta, tb, step);
+  }
+
+  // The springs whose bound rose since the last call, each with its new bound (the smallest
+  // phi_c,j of the members still open), handed to `widen(spring, upper)` once.
+  template <class Widen>
+  void take_widened(Widen&& widen) {
+    for (const int j : widened_) widen(j, bound_[static_cast<std::size_t>(j - 1)]);
+    widened_.clear();
   }
 
   // A member's own candidates (the kernel's bound with its bounds), then Integrator's search.
@@ -147,6 +156,29 @@ class Ensemble {
     --open_;
   }
 
+  // Spring j's bound in the run: the smallest phi_c,j of its open members (+inf when none is),
+  // and the member that holds it. Once that member has settled, the run's bound may rise to the
+  // next open member's: a slow pull's steps then stop holding candidates for members already
+  // broken (10^4 seeds: from every step after tau ~ 200 to about one step in ten).
+  void raise_bound(int j) {
+    const auto i = static_cast<std::size_t>(j - 1);
+    Buckets& b = buckets_[i];
+    double lowest = std::numeric_limits<double>::infinity();
+    int holder = -1;
+    for (; b.first < b.count; ++b.first) {
+      for (int e = b.start[b.first]; e < b.start[b.first + 1]; ++e) {
+        const int member = b.members[static_cast<std::size_t>(e)];
+        if (settled_[static_cast<std::size_t>(member)] || !(phi(member, j) < lowest)) continue;
+        lowest = phi(member, j);
+        holder = member;
+      }
+      if (holder >= 0) break;  // bucket b.first holds it
+    }
+    holder_[i] = holder;
+    if (lowest > bound_[i]) widened_.push_back(j);
+    bound_[i] = lowest;
+  }
+
   int open() const { return open_; }
   void fail_open() {
     for (int m = 0; m < members_; ++m)
@@ -165,9 +197,9 @@ class Ensemble {
   std::uint64_t visit_ = 0;
   // One spring's members bucketed by phi_c,j (a counting sort).
   struct Buckets {
-    double lo = 0.0, scale = 0.0, loosest = 0.0;  // loosest: the smallest phi_c,j
-    std::size_t count = 0, first = 0;             // first: no bucket before it holds an open member
-    std::vector<int> start;                       // bucket k: members[start[k] .. start[k+1])
+    double lo = 0.0, scale = 0.0;
+    std::size_t count = 0, first = 0;  // first: no bucket before it holds an open member
+    std::vector<int> start;            // bucket k: members[start[k] .. start[k+1])
     std::vector<int> members;
     std::size_t of(double v) const {
       if (!(v < std::numeric_limits<double>::infinity())) return count - 1;
@@ -177,6 +209,9 @@ class Ensemble {
     }
   };
   std::vector<Buckets> buckets_;
+  std::vector<double> bound_;  // spring j's bound in the run, at j - 1 (raise_bound) ...
+  std::vector<int> holder_;    // ... and the member that holds it (-1: none is open)
+  std::vector<int> widened_;   // springs whose bound rose since take_widened
   std::vector<int> touched_;
   std::vector<detail::Candidate> mine_;
   int open_ = 0;
@@ -191,11 +226,18 @@ std::vector<LaneEnd> ensemble_first_breaks(const ThresholdEnsemble& e,
   if (ensemble.open() == 0) return ensemble.take();
   // One worker and no temporal blocks: `run`'s kernels for a chain this size (the same bits on
   // any path, integrator.h), with every crossing handed to watch().
+  // The PerBead policy (the Uniform bits, integrator.h) even when the loosest bounds are all
+  // equal, so that each spring's bound can rise on its own.
   IntegratorOptions options{e.dt, 1};
   options.block_steps = 0;
+  options.per_bead_policy = true;
   Integrator sim(ensemble.loosest(e.chain), e.forcing, options);
+  const bool stretch = e.chain.break_on == BreakMode::Stretch;
   sim.watch_crossings([&](const std::vector<detail::Candidate>& candidates, double ta, double tb) {
     ensemble.watch(candidates, ta, tb, sim.steps_done() + 1);
+    ensemble.take_widened([&](int spring, double upper) {
+      sim.widen_bounds(spring, upper, lower_bound_of(upper, stretch));
+    });
   });
   while (ensemble.open() > 0 && sim.steps_done() < e.last_step) {
     if (stop && stop->load(std::memory_order_relaxed)) break;
