@@ -345,10 +345,11 @@ int Integrator::small_run(int max_steps) {
 // one plain interval (Forcing::plain_step) without a pull-string crossing; `kernel(in)` integrates
 // the step of `in` into impl_->outputs and returns their step_books. Its h and drive values, the
 // kernel call, the books and the commit are those of advance_interval() -> rk4() -> commit(), in
-// the same order. A step whose output holds a crossing candidate or a value that is not finite
-// ends the run; as its first step, it goes on in advance_interval's own code from that output
-// (no second kernel call). Returns the steps taken, 0 when the state stopped being finite, -1
-// when the first step is not plain (nothing done: step()'s general code takes it).
+// the same order. A step whose output holds a crossing candidate ends the run: it goes on in
+// advance_interval's own code from that output (no second kernel call). A step whose output is
+// not finite ends it too; after other steps the next call redoes it. Returns the steps taken,
+// 0 when the state stopped being finite, -1 when the first step is not plain (nothing done:
+// step()'s general code takes it).
 template <class Kernel>
 int Integrator::plain_steps(int max_steps, Kernel kernel) {
   Impl& im = *impl_;
@@ -404,15 +405,20 @@ int Integrator::plain_steps(int max_steps, Kernel kernel) {
     in.psi_out = x_next;
     in.vel_out = v_next;
     const StepBooks books = kernel(in);
-    if (!books.finite || books.candidates) {
-      // A step that may break a spring or fail ends a run. After other steps the next call
-      // redoes it, so that the caller sees those steps (a run loop's observers) before a
-      // failure, as it would one step at a time.
+    if (!books.finite) {
+      // A step that fails ends a run. After other steps the next call redoes it, so that the
+      // caller sees those steps (a run loop's observers) before the failure, as it would one
+      // step at a time.
       if (k > 0) return end_run();
-      if (!books.finite) {
-        report_non_finite(t0);
-        return 0;
-      }
+      report_non_finite(t0);
+      return 0;
+    }
+    if (books.candidates) {
+      // A step that may break a spring ends a run, settled in advance_interval's own code from
+      // this output: end_run() leaves the state at its start in state_ and the output in
+      // im.psi_next, im.vel_next, as after a run's first step (no second kernel call; a watched
+      // ensemble has such a step in every ten, issue #23). The run holds no step after a break.
+      const int before = k > 0 ? end_run() : 0;
       f_end = in.force[2];
       learn_end(t1);
       stage_dissipation_ = books.dissipated;
@@ -420,7 +426,7 @@ int Integrator::plain_steps(int max_steps, Kernel kernel) {
       if (!settle_interval(t0, t1, false)) return 0;
       state_.step += 1;
       state_.tau = t1;
-      return 1;
+      return before + 1;
     }
     // commit(t1) and step()'s count.
     std::swap(x, x_next);

@@ -48,28 +48,41 @@ class Ensemble {
     // sorting 30 x 10^4 keys cost 30 ms against a run's 0.4 ms). Bucket b holds lo + [b, b+1) /
     // scale; the index is monotone in phi_c,j, so every member with phi_c,j <= reach lies in a
     // bucket up to bucket_of(reach).
-    const auto buckets = static_cast<std::size_t>(members_);
-    // Spring-major copy: the passes below read one spring's values in a row.
-    std::vector<double> column(static_cast<std::size_t>(members_));
-    for (int j = 0; j < n_; ++j) {
-      Buckets& b = buckets_[static_cast<std::size_t>(j)];
-      for (int m = 0; m < members_; ++m) column[static_cast<std::size_t>(m)] = phi(m, j + 1);
-      double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
-      for (int m = 0; m < members_; ++m) {
-        const double v = column[static_cast<std::size_t>(m)];
-        lo = std::min(lo, v);
-        if (v < std::numeric_limits<double>::infinity()) hi = std::max(hi, v);
+    const auto buckets = static_cast<std::size_t>(members_), members = buckets;
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    // One pass in the members' order: a spring-major copy (the passes below read one spring's
+    // values in a row) and each spring's smallest and largest finite phi_c,j (30 independent
+    // minima; one spring at a time they were a chain of dependent ones).
+    std::vector<double> columns(members * static_cast<std::size_t>(n_));
+    std::vector<double> lo(static_cast<std::size_t>(n_), kInf),
+        hi(static_cast<std::size_t>(n_), 0.0);
+    for (std::size_t m = 0; m < members; ++m) {
+      const double* row = phi_.data() + m * static_cast<std::size_t>(n_);
+      for (std::size_t j = 0; j < static_cast<std::size_t>(n_); ++j) {
+        const double v = row[j];
+        columns[j * members + m] = v;
+        lo[j] = std::min(lo[j], v);
+        if (v < kInf) hi[j] = std::max(hi[j], v);
       }
-      b.lo = lo;
-      b.scale = hi > lo ? static_cast<double>(buckets) / (hi - lo) : 0.0;
+    }
+    std::vector<int> slot(members);  // each member's bucket of the spring at hand
+    for (std::size_t j = 0; j < static_cast<std::size_t>(n_); ++j) {
+      Buckets& b = buckets_[j];
+      const double* column = columns.data() + j * members;
+      b.lo = lo[j];
+      b.scale = hi[j] > lo[j] ? static_cast<double>(buckets) / (hi[j] - lo[j]) : 0.0;
       b.count = buckets;
       b.start.assign(buckets + 1, 0);
-      for (int m = 0; m < members_; ++m) ++b.start[b.of(column[static_cast<std::size_t>(m)]) + 1];
+      for (std::size_t m = 0; m < members; ++m) {
+        slot[m] = static_cast<int>(b.of(column[m]));
+        ++b.start[static_cast<std::size_t>(slot[m]) + 1];
+      }
       for (std::size_t k = 0; k < buckets; ++k) b.start[k + 1] += b.start[k];
-      b.members.resize(static_cast<std::size_t>(members_));
+      b.members.resize(members);
       std::vector<int> fill(b.start.begin(), b.start.end() - 1);
-      for (int m = 0; m < members_; ++m)
-        b.members[static_cast<std::size_t>(fill[b.of(column[static_cast<std::size_t>(m)])]++)] = m;
+      for (std::size_t m = 0; m < members; ++m)
+        b.members[static_cast<std::size_t>(fill[static_cast<std::size_t>(slot[m])]++)] =
+            static_cast<int>(m);
     }
     bound_.assign(static_cast<std::size_t>(n_), std::numeric_limits<double>::infinity());
     holder_.resize(static_cast<std::size_t>(n_));
