@@ -98,6 +98,24 @@ TEST_CASE("an ensemble of Weibull seeds gives each seed's first break as Integra
       }
 }
 
+TEST_CASE("an ensemble's bounds rise as its members break, and no member is missed",
+          "[ensemble][flaws]") {
+  // A slow pull (beta = 0.002, gamma = 0.05) of 300 seeds, Weibull modulus 6: the chain stretches
+  // almost uniformly, members break one after another over ~300 tau, and each spring's bound in
+  // the shared run rises past every member that has broken (threshold_ensemble.cpp,
+  // raise_bound) hundreds of times. A bound raised past an open member's phi_c,j would lose that
+  // member's crossing step: its tau (or spring) would differ from Integrator's alone.
+  std::vector<cb::ChainParams> members;
+  for (int seed = 1; seed <= 300; ++seed) {
+    members.push_back(flawed(seed, 6.0));
+    members.back().gamma = 0.05;
+  }
+  cb::DriveDesc drive;
+  drive.type = cb::DriveType::Ramp;
+  drive.beta = 0.002;
+  CHECK(check_members(members.front(), members, drive, 0.01, std::llround(700.0 / 0.01)) == 300);
+}
+
 TEST_CASE("an ensemble over a uniform chain's threshold gives Integrator's breaks", "[ensemble]") {
   // The paper's chain (no arrays: the Uniform coefficient policy for each member) swept over
   // phi_c; the ensemble runs the loosest as PerBead, which gives the Uniform bits.
