@@ -8,10 +8,6 @@
 
 #include "physics/lanes_interval.h"
 #include "physics/target_avx2_begin.inc"
-// This kernel keeps the RK4 sums' multiply and add (stencil.inc, add_doubled; the same bits
-// either way): fused, it ran 9 % slower at N = 1000 (BM_LanesRK4, three alternations), where the
-// AVX2 chain kernels gain 4-7 %.
-#undef CB_TARGET_FMA
 
 namespace cb::detail::avx2 {
 constexpr int kVec = 4;  // doubles a register
