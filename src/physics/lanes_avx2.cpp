@@ -1,6 +1,4 @@
 // The ensemble kernel (lanes_kernel.inc) compiled for AVX2 (two registers a row of lanes).
-#include <immintrin.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>

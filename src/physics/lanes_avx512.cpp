@@ -1,7 +1,5 @@
 // The ensemble kernel (lanes_kernel.inc) compiled for AVX-512F with 512-bit vectors (one register a
 // row of lanes).
-#include <immintrin.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>

@@ -1,6 +1,4 @@
 // The fused RK4 kernel (rk4_tile_kernel.inc) compiled for AVX2 (4 doubles a vector).
-#include <immintrin.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
