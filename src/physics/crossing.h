@@ -2,6 +2,7 @@
 // rule every kernel uses to decide that a spring may reach it (kernels, lanes, Integrator).
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <vector>
 
@@ -32,8 +33,46 @@ struct Candidate {
 // only tension breaks; the paper's |phi| >= c is upper = c, lower = -c); a negative value
 // when it does not. The interpolant's error is O(h^4), so the crossing time is too wherever
 // phi crosses with a nonzero slope.
-double hermite_first_crossing(double p0, double p1, double m0, double m1, double h, double upper,
-                              double lower);
+//
+// The search in two parts, for callers with many (an ensemble settles up to 10^4 members'
+// crossings, threshold_ensemble.cpp): hermite_root() finds whether and in which bracket the
+// cubic first reaches a bound (cheap), finish_hermite_roots() bisects the brackets of many such
+// roots together, four at a time: each is the one bisection, step for step, and independent
+// of the others, so their chains of dependent operations overlap in the core.
+struct HermiteRoot {
+  double a = 0.0, b = 0.0, q = 0.0, d = 0.0;  // p(s) = a + b s + q s^2 + d s^3, s = theta / h
+  double h = 0.0, upper = 0.0, lower = 0.0;
+  // Where the crossing is: up to two brackets of s (one piece of [0, 1] where p is monotone;
+  // the upper and the lower bound may both be reached in it), each with g(lo) < 0 <= g(hi) for
+  // g = p - upper, or lower - p when `down`.
+  int brackets = 0;
+  double lo[2] = {0.0, 0.0}, hi[2] = {0.0, 0.0};
+  bool down[2] = {false, false};
+  // The answer: -1 (no crossing) or 0 (at the start) at once, otherwise set by
+  // finish_hermite_roots from the brackets' bisections.
+  double theta = -1.0;
+  // Whether phi reaches a bound in [0, h] (known before the bisections).
+  bool crosses() const { return theta >= 0.0 || brackets > 0; }
+};
+HermiteRoot hermite_root(double p0, double p1, double m0, double m1, double h, double upper,
+                         double lower);
+void finish_hermite_roots(HermiteRoot* roots, std::size_t count);
+
+inline double hermite_first_crossing(double p0, double p1, double m0, double m1, double h,
+                                     double upper, double lower) {
+  HermiteRoot root = hermite_root(p0, p1, m0, m1, h, upper, lower);
+  finish_hermite_roots(&root, 1);
+  return root.theta;
+}
+
+// The earliest crossing rule: a crossing at ta + theta (theta < 0: none) of `spring` replaces
+// the one kept (*first, *kept) if earlier; ties go to the lower spring.
+inline void keep_earliest(int spring, double ta, double theta, int* kept, double* first) {
+  if (theta >= 0.0 && (ta + theta < *first || (ta + theta == *first && spring < *kept))) {
+    *first = ta + theta;
+    *kept = spring;
+  }
+}
 
 // The earliest crossing among `candidates` inside [ta, tb], each spring against its own bounds
 // (coef's upper_of / lower_of); ties go to the lower spring. Returns the spring and sets
@@ -51,11 +90,9 @@ int earliest_crossing_within(const std::vector<Candidate>& candidates, const Bou
   for (const Candidate& c : candidates) {
     double upper = 0.0, lower = 0.0;
     bounds(c.spring, &upper, &lower);
-    const double theta = hermite_first_crossing(c.p0, c.p1, c.m0, c.m1, tb - ta, upper, lower);
-    if (theta >= 0.0 && (ta + theta < *first || (ta + theta == *first && c.spring < spring))) {
-      *first = ta + theta;
-      spring = c.spring;
-    }
+    keep_earliest(c.spring, ta,
+                  hermite_first_crossing(c.p0, c.p1, c.m0, c.m1, tb - ta, upper, lower), &spring,
+                  first);
   }
   return spring;
 }

@@ -134,6 +134,7 @@ class Ensemble {
       }
     }
     for (const int m : touched_) settle(m, candidates, slack, ta, tb, step);
+    if (roots_.size() >= kFinishAt) finish();
   }
 
   // The springs whose bound rose since the last call, each with its new bound (the smallest
@@ -144,29 +145,47 @@ class Ensemble {
     widened_.clear();
   }
 
-  // A member's own candidates (the kernel's bound with its bounds), then Integrator's search.
+  // A member's own candidates (the kernel's bound with its bounds), then Integrator's search
+  // (crossing.h's earliest_crossing_within) in two parts: whether the member crosses in this
+  // interval is known at once, and it settles; its crossing times are bisected later with many
+  // other members' (finish), four at a time, which a slow pull, one member a step, could not do
+  // otherwise. The same roots and the same earliest rule, so the same spring and tau.
   void settle(int m, const std::vector<detail::Candidate>& candidates, double slack, double ta,
               double tb, std::int64_t step) {
-    mine_.clear();
+    Pending pending{m, ta, tb, step, roots_.size()};
     for (const detail::Candidate& c : candidates) {
       const double upper = phi(m, c.spring), lower = lower_bound_of(upper, stretch_);
-      if (detail::may_cross_between(c.p0, c.p1, c.m0, c.m1, slack, upper, lower))
-        mine_.push_back(c);
+      if (!detail::may_cross_between(c.p0, c.p1, c.m0, c.m1, slack, upper, lower)) continue;
+      const detail::HermiteRoot root =
+          detail::hermite_root(c.p0, c.p1, c.m0, c.m1, tb - ta, upper, lower);
+      if (!root.crosses()) continue;
+      roots_.push_back(root);
+      root_springs_.push_back(c.spring);
     }
-    double first = 0.0;
-    const int spring = detail::earliest_crossing_within(
-        mine_,
-        [&](int j, double* upper, double* lower) {
-          *upper = phi(m, j);
-          *lower = lower_bound_of(*upper, stretch_);
-        },
-        ta, tb, &first);
-    if (spring < 0) return;
-    LaneEnd& end = ends_[static_cast<std::size_t>(m)];
-    end.kind = LaneEnd::Kind::Broke;
-    end.first = {spring, first, step};
+    if (roots_.size() == pending.first_root) return;
+    pending_.push_back(pending);
     settled_[static_cast<std::size_t>(m)] = true;
     --open_;
+  }
+
+  // The settled members' crossing times: their roots bisected together, then each member's
+  // earliest (ties to the lower spring).
+  void finish() {
+    detail::finish_hermite_roots(roots_.data(), roots_.size());
+    for (std::size_t k = 0; k < pending_.size(); ++k) {
+      const Pending& p = pending_[k];
+      const std::size_t end = k + 1 < pending_.size() ? pending_[k + 1].first_root : roots_.size();
+      double first = p.tb + 1.0;
+      int spring = -1;
+      for (std::size_t r = p.first_root; r < end; ++r)
+        detail::keep_earliest(root_springs_[r], p.ta, roots_[r].theta, &spring, &first);
+      LaneEnd& out = ends_[static_cast<std::size_t>(p.member)];
+      out.kind = LaneEnd::Kind::Broke;
+      out.first = {spring, first, p.step};
+    }
+    pending_.clear();
+    roots_.clear();
+    root_springs_.clear();
   }
 
   // Spring j's bound in the run: the smallest phi_c,j of its open members (+inf when none is),
@@ -198,7 +217,10 @@ class Ensemble {
       if (!settled_[static_cast<std::size_t>(m)])
         ends_[static_cast<std::size_t>(m)].kind = LaneEnd::Kind::Failed;
   }
-  std::vector<LaneEnd> take() { return std::move(ends_); }
+  std::vector<LaneEnd> take() {
+    finish();
+    return std::move(ends_);
+  }
 
  private:
   int n_, members_;
@@ -226,7 +248,18 @@ class Ensemble {
   std::vector<int> holder_;    // ... and the member that holds it (-1: none is open)
   std::vector<int> widened_;   // springs whose bound rose since take_widened
   std::vector<int> touched_;
-  std::vector<detail::Candidate> mine_;
+  // Members settled whose crossing times are not bisected yet (finish), and their roots: member
+  // k's are roots_[first_root of k .. first_root of k + 1).
+  struct Pending {
+    int member;
+    double ta, tb;
+    std::int64_t step;
+    std::size_t first_root;
+  };
+  static constexpr std::size_t kFinishAt = 256;
+  std::vector<Pending> pending_;
+  std::vector<detail::HermiteRoot> roots_;
+  std::vector<int> root_springs_;
   int open_ = 0;
 };
 
