@@ -1,4 +1,6 @@
 // The ensemble kernel (lanes_kernel.inc) compiled for AVX2 (two registers a row of lanes).
+#include <immintrin.h>  // stencil.inc's fmadd
+
 #include <algorithm>
 #include <cmath>
 #include <limits>

@@ -1,5 +1,7 @@
 // The ensemble kernel (lanes_kernel.inc) compiled for AVX-512F with 512-bit vectors (one register a
 // row of lanes).
+#include <immintrin.h>  // stencil.inc's fmadd
+
 #include <algorithm>
 #include <cmath>
 #include <limits>

@@ -1,4 +1,6 @@
 // The fused RK4 kernel (rk4_tile_kernel.inc) compiled for AVX2 (4 doubles a vector).
+#include <immintrin.h>  // stencil.inc's fmadd
+
 #include <algorithm>
 #include <cmath>
 #include <limits>

@@ -1,5 +1,7 @@
 // The fused RK4 kernel (rk4_tile_kernel.inc) compiled for AVX-512F with 512-bit vectors
 // (8 doubles; GCC would otherwise prefer 256-bit ones).
+#include <immintrin.h>  // stencil.inc's fmadd
+
 #include <algorithm>
 #include <cmath>
 #include <limits>

@@ -1,5 +1,7 @@
 // The fused RK4 kernel (rk4_tile_kernel.inc) compiled for the x86-64 baseline: no pragma, every
 // x86-64 CPU runs it.
+#include <immintrin.h>  // stencil.inc's fmadd
+
 #include <algorithm>
 #include <cmath>
 #include <limits>

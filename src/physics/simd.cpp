@@ -24,7 +24,8 @@ bool simd_supported(SimdPath path) {
     case SimdPath::Sse2:
       return true;
     case SimdPath::Avx2:
-      return __builtin_cpu_supports("avx2");
+      // The AVX2 kernels use FMA3 too (stencil.inc's fmadd); every AVX2 CPU has it.
+      return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
     case SimdPath::Avx512:
       return __builtin_cpu_supports("avx512f");
   }

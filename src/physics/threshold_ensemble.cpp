@@ -1,5 +1,7 @@
 #include "physics/threshold_ensemble.h"
 
+#include <immintrin.h>  // stencil.inc's fmadd
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
