@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "physics/coefficients.h"
+#include "physics/simd.h"
 
 namespace cb::detail {
 
@@ -60,75 +61,22 @@ HermiteRoot hermite_root(double p0, double p1, double m0, double m1, double h, d
   return r;
 }
 
-namespace {
+#include "physics/crossing_bisect.inc"
 
-// Four lanes (two SSE2 registers, or what the target has). Only ever local values: a function
-// taking or returning them would change the ABI with the instruction set (-Wpsabi).
-typedef double V4 __attribute__((vector_size(32)));
-typedef long long L4 __attribute__((vector_size(32)));
-
-}  // namespace
-
-// The bisection of g on [lo, hi], g(lo) < 0 <= g(hi): mid = (lo + hi) / 2, then hi = mid where
-// g(mid) >= 0, else lo = mid; it stops after 80 steps, at hi - lo <= 1e-17, or once mid rounds
-// to lo or hi (no later step could move either; a root in [0.5, 1] is there after ~54 steps),
-// and returns hi: the crossing, to double precision in s. Four brackets at a time, one per lane
-// of a vector, each lane's operations and decisions those of its bracket alone (IEEE lane by
-// lane; a lane that has stopped keeps its lo and hi): the same bits as one at a time (20 million
-// random roots against the scalar loop compared, session 13).
+// One root (Integrator's break) in a group of four, which the baseline does in two registers: a
+// wider group would only add idle lanes to its one chain. Many (an ensemble's) in the widest
+// groups the CPU runs (crossing_avx2.cpp, crossing_avx512.cpp); the same bits either way.
 void finish_hermite_roots(HermiteRoot* roots, std::size_t count) {
-  struct Job {
-    HermiteRoot* root;
-    int bracket;
-  };
-  Job group[4];
-  std::size_t lanes = 0;
-  auto bisect_group = [&] {
-    V4 a{}, b{}, q{}, d{}, c{}, lo{}, hi{};
-    L4 down{}, active{};
-    for (std::size_t l = 0; l < lanes; ++l) {
-      const HermiteRoot& r = *group[l].root;
-      const int k = group[l].bracket;
-      a[l] = r.a, b[l] = r.b, q[l] = r.q, d[l] = r.d;
-      c[l] = r.down[k] ? r.lower : r.upper;
-      down[l] = r.down[k] ? -1 : 0;
-      lo[l] = r.lo[k], hi[l] = r.hi[k];
-      active[l] = -1;
-    }
-    const V4 half = V4{} + 0.5;
-    const V4 width = V4{} + 1e-17;
-    for (int i = 0; i < 80; ++i) {
-      active &= hi - lo > width;
-      const V4 mid = half * (lo + hi);
-      active &= (mid != lo) & (mid != hi);
-      if (!(active[0] | active[1] | active[2] | active[3])) break;
-      const V4 p = a + mid * (b + mid * (q + mid * d));
-      // g = c - p where the bracket is the lower bound's, else p - c (bits chosen, not mixed).
-      const L4 g = (reinterpret_cast<L4>(c - p) & down) | (reinterpret_cast<L4>(p - c) & ~down);
-      const L4 reached = reinterpret_cast<V4>(g) >= V4{};
-      const L4 to_hi = active & reached, to_lo = active & ~reached;
-      const L4 m = reinterpret_cast<L4>(mid);
-      hi = reinterpret_cast<V4>((m & to_hi) | (reinterpret_cast<L4>(hi) & ~to_hi));
-      lo = reinterpret_cast<V4>((m & to_lo) | (reinterpret_cast<L4>(lo) & ~to_lo));
-    }
-    for (std::size_t l = 0; l < lanes; ++l) {
-      HermiteRoot& r = *group[l].root;
-      r.theta = std::min(r.theta, hi[l]);
-    }
-    lanes = 0;
-  };
-  for (std::size_t k = 0; k < count; ++k) {
-    HermiteRoot& r = roots[k];
-    if (r.brackets == 0) continue;
-    r.theta = 2.0;  // the smaller of its brackets' roots (times h below)
-    for (int b = 0; b < r.brackets; ++b) {
-      group[lanes++] = {&r, b};
-      if (lanes == 4) bisect_group();
-    }
+  if (count <= 1) return finish_roots<2, 2>(roots, count);
+  switch (active_simd()) {
+    case SimdPath::Avx512:
+      return avx512::finish_hermite_roots(roots, count);
+    case SimdPath::Avx2:
+      return avx2::finish_hermite_roots(roots, count);
+    case SimdPath::Sse2:
+      break;
   }
-  if (lanes > 0) bisect_group();
-  for (std::size_t k = 0; k < count; ++k)
-    if (roots[k].brackets > 0) roots[k].theta *= roots[k].h;
+  finish_roots<2, 4>(roots, count);
 }
 
 int earliest_crossing(const std::vector<Candidate>& candidates, const ChainCoefficients& coef,

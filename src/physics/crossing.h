@@ -57,6 +57,14 @@ struct HermiteRoot {
 HermiteRoot hermite_root(double p0, double p1, double m0, double m1, double h, double upper,
                          double lower);
 void finish_hermite_roots(HermiteRoot* roots, std::size_t count);
+// The same for the AVX2 and AVX-512 paths (crossing_avx2.cpp, crossing_avx512.cpp), which
+// finish_hermite_roots picks by active_simd().
+namespace avx2 {
+void finish_hermite_roots(HermiteRoot* roots, std::size_t count);
+}
+namespace avx512 {
+void finish_hermite_roots(HermiteRoot* roots, std::size_t count);
+}
 
 inline double hermite_first_crossing(double p0, double p1, double m0, double m1, double h,
                                      double upper, double lower) {

@@ -1,9 +1,10 @@
-// The page has no x86 kernels (rk4_*_avx2.cpp, *_avx512.cpp, lanes_*.cpp: x86 intrinsics and
-// target pragmas), but the dispatch files that name them (rk4_tile.cpp, rk4_chain.cpp,
-// lanes.cpp) are the program's own. On WebAssembly simd_supported() is true for the portable
-// path only (physics/simd.cpp), so active_simd() is SimdPath::Sse2 and these are never called:
-// the page runs the generic kernel, the one whose bits every x86 path reproduces. They trap if
-// that ever changes rather than compute anything.
+// The page has no x86 kernels (rk4_*_avx2.cpp, *_avx512.cpp, lanes_*.cpp, crossing_*.cpp: x86
+// intrinsics and target pragmas), but the dispatch files that name them (rk4_tile.cpp,
+// rk4_chain.cpp, lanes.cpp, crossing.cpp) are the program's own. On WebAssembly simd_supported() is
+// true for the portable path only (physics/simd.cpp), so active_simd() is SimdPath::Sse2 and these
+// are never called: the page runs the generic kernel, the one whose bits every x86 path reproduces.
+// They trap if that ever changes rather than compute anything.
+#include "physics/crossing.h"
 #include "physics/lanes_interval.h"
 #include "physics/rk4_chain.h"
 #include "physics/rk4_tile.h"
@@ -28,6 +29,9 @@ void rk4_window(const StepInput&, int, int, int, int, StepOutput&) {
 void lanes_interval(const LaneInterval&) {
   CB_NOT_IN_THE_PAGE;
 }
+void finish_hermite_roots(HermiteRoot*, std::size_t) {
+  CB_NOT_IN_THE_PAGE;
+}
 }  // namespace avx2
 
 namespace avx512 {
@@ -44,6 +48,9 @@ void rk4_window(const StepInput&, int, int, int, int, StepOutput&) {
   CB_NOT_IN_THE_PAGE;
 }
 void lanes_interval(const LaneInterval&) {
+  CB_NOT_IN_THE_PAGE;
+}
+void finish_hermite_roots(HermiteRoot*, std::size_t) {
   CB_NOT_IN_THE_PAGE;
 }
 }  // namespace avx512

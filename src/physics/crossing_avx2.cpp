@@ -1,0 +1,17 @@
+// Many Hermite roots bisected at once (crossing_bisect.inc) compiled for AVX2: groups of 16
+// brackets, four registers of four lanes.
+#include <algorithm>
+#include <cstddef>
+
+#include "physics/crossing.h"
+#include "physics/target_avx2_begin.inc"
+
+namespace cb::detail::avx2 {
+#include "physics/crossing_bisect.inc"
+
+void finish_hermite_roots(HermiteRoot* roots, std::size_t count) {
+  finish_roots<4, 4>(roots, count);
+}
+}  // namespace cb::detail::avx2
+
+#include "physics/target_end.inc"

@@ -1,0 +1,17 @@
+// Many Hermite roots bisected at once (crossing_bisect.inc) compiled for AVX-512F: groups of 32
+// brackets, four registers of eight lanes.
+#include <algorithm>
+#include <cstddef>
+
+#include "physics/crossing.h"
+#include "physics/target_avx512_begin.inc"
+
+namespace cb::detail::avx512 {
+#include "physics/crossing_bisect.inc"
+
+void finish_hermite_roots(HermiteRoot* roots, std::size_t count) {
+  finish_roots<8, 4>(roots, count);
+}
+}  // namespace cb::detail::avx512
+
+#include "physics/target_end.inc"
