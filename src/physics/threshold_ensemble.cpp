@@ -35,6 +35,20 @@ bool ensemble_can_share(const ChainParams& a, const ChainParams& b) {
 namespace {
 
 class Ensemble {
+  // One spring's members bucketed by phi_c,j (a counting sort).
+  struct Buckets {
+    double lo = 0.0, scale = 0.0;
+    std::size_t count = 0, first = 0;  // first: no bucket before it holds an open member
+    std::vector<int> start;            // bucket k: members[start[k] .. start[k+1])
+    std::vector<int> members;
+    std::size_t of(double v) const {
+      if (!(v < std::numeric_limits<double>::infinity())) return count - 1;
+      if (scale == 0.0) return 0;
+      const double x = (v - lo) * scale;
+      return x <= 0.0 ? 0 : std::min(count - 1, static_cast<std::size_t>(x));
+    }
+  };
+
  public:
   explicit Ensemble(const ThresholdEnsemble& e)
       : n_(e.chain.beads),
@@ -46,49 +60,22 @@ class Ensemble {
         seen_(static_cast<std::size_t>(members_), 0),
         buckets_(static_cast<std::size_t>(n_)) {
     assert(e.thresholds.size() == static_cast<std::size_t>(members_) * n_);
-    // Per spring, the members in buckets by phi_c,j (a counting sort: one linear pass, where
-    // sorting 30 x 10^4 keys cost 30 ms against a run's 0.4 ms). Bucket b holds lo + [b, b+1) /
-    // scale; the index is monotone in phi_c,j, so every member with phi_c,j <= reach lies in a
-    // bucket up to bucket_of(reach).
-    const auto buckets = static_cast<std::size_t>(members_), members = buckets;
-    constexpr double kInf = std::numeric_limits<double>::infinity();
-    // One pass in the members' order: a spring-major copy (the passes below read one spring's
-    // values in a row) and each spring's smallest and largest finite phi_c,j (30 independent
-    // minima; one spring at a time they were a chain of dependent ones).
-    std::vector<double> columns(members * static_cast<std::size_t>(n_));
-    std::vector<double> lo(static_cast<std::size_t>(n_), kInf),
-        hi(static_cast<std::size_t>(n_), 0.0);
-    for (std::size_t m = 0; m < members; ++m) {
-      const double* row = phi_.data() + m * static_cast<std::size_t>(n_);
-      for (std::size_t j = 0; j < static_cast<std::size_t>(n_); ++j) {
+    // One pass in the members' order: each spring's smallest phi_c,j (the run's first bound),
+    // the first member holding it, and its largest finite one (the buckets' range). 30
+    // independent minima; one spring at a time they were a chain of dependent ones.
+    const auto n = static_cast<std::size_t>(n_);
+    lo_.assign(n, std::numeric_limits<double>::infinity());
+    hi_.assign(n, 0.0);
+    holder_.assign(n, -1);
+    for (int m = 0; m < members_; ++m) {
+      const double* row = phi_.data() + static_cast<std::size_t>(m) * n;
+      for (std::size_t j = 0; j < n; ++j) {
         const double v = row[j];
-        columns[j * members + m] = v;
-        lo[j] = std::min(lo[j], v);
-        if (v < kInf) hi[j] = std::max(hi[j], v);
+        if (v < lo_[j]) lo_[j] = v, holder_[j] = m;
+        if (v < std::numeric_limits<double>::infinity()) hi_[j] = std::max(hi_[j], v);
       }
     }
-    std::vector<int> slot(members);  // each member's bucket of the spring at hand
-    for (std::size_t j = 0; j < static_cast<std::size_t>(n_); ++j) {
-      Buckets& b = buckets_[j];
-      const double* column = columns.data() + j * members;
-      b.lo = lo[j];
-      b.scale = hi[j] > lo[j] ? static_cast<double>(buckets) / (hi[j] - lo[j]) : 0.0;
-      b.count = buckets;
-      b.start.assign(buckets + 1, 0);
-      for (std::size_t m = 0; m < members; ++m) {
-        slot[m] = static_cast<int>(b.of(column[m]));
-        ++b.start[static_cast<std::size_t>(slot[m]) + 1];
-      }
-      for (std::size_t k = 0; k < buckets; ++k) b.start[k + 1] += b.start[k];
-      b.members.resize(members);
-      std::vector<int> fill(b.start.begin(), b.start.end() - 1);
-      for (std::size_t m = 0; m < members; ++m)
-        b.members[static_cast<std::size_t>(fill[static_cast<std::size_t>(slot[m])]++)] =
-            static_cast<int>(m);
-    }
-    bound_.assign(static_cast<std::size_t>(n_), std::numeric_limits<double>::infinity());
-    holder_.resize(static_cast<std::size_t>(n_));
-    for (int j = 1; j <= n_; ++j) raise_bound(j);
+    bound_ = lo_;
     open_ = members_;
   }
 
@@ -122,8 +109,7 @@ class Ensemble {
       // (rounding is monotone), so the walk below misses no member the bound would test.
       const double s = slack * (detail::sabs(c.m0) + detail::sabs(c.m1));
       const double reach = std::max(std::abs(c.p0), std::abs(c.p1)) + s;
-      const auto j = static_cast<std::size_t>(c.spring - 1);
-      Buckets& b = buckets_[j];
+      Buckets& b = buckets_of(c.spring);
       const std::size_t last = b.of(reach);
       for (std::size_t k = b.first; k <= last && k < b.count; ++k) {
         for (int e = b.start[k]; e < b.start[k + 1]; ++e) {
@@ -190,13 +176,43 @@ class Ensemble {
     root_springs_.clear();
   }
 
+  // Spring j's members in buckets by phi_c,j (a counting sort: one linear pass, where sorting
+  // 30 x 10^4 keys cost 30 ms against a run's 0.4 ms), built when the run first needs them: a
+  // jerk's members all break before its wave has brought more than a few springs near their
+  // bounds (2 of 30 at beta = 1), and the buckets of the others were most of its cost. Bucket k
+  // holds lo + [k, k+1) / scale; the index is monotone in phi_c,j, so every member with
+  // phi_c,j <= reach lies in a bucket up to of(reach).
+  Buckets& buckets_of(int j) {
+    const auto i = static_cast<std::size_t>(j - 1);
+    Buckets& b = buckets_[i];
+    if (!b.start.empty()) return b;
+    const auto members = static_cast<std::size_t>(members_), n = static_cast<std::size_t>(n_);
+    const std::size_t buckets = members;
+    b.lo = lo_[i];
+    b.scale = hi_[i] > lo_[i] ? static_cast<double>(buckets) / (hi_[i] - lo_[i]) : 0.0;
+    b.count = buckets;
+    b.start.assign(buckets + 1, 0);
+    slot_.resize(members);
+    for (std::size_t m = 0; m < members; ++m) {
+      slot_[m] = static_cast<int>(b.of(phi_[m * n + i]));
+      ++b.start[static_cast<std::size_t>(slot_[m]) + 1];
+    }
+    for (std::size_t k = 0; k < buckets; ++k) b.start[k + 1] += b.start[k];
+    b.members.resize(members);
+    std::vector<int> fill(b.start.begin(), b.start.end() - 1);
+    for (std::size_t m = 0; m < members; ++m)
+      b.members[static_cast<std::size_t>(fill[static_cast<std::size_t>(slot_[m])]++)] =
+          static_cast<int>(m);
+    return b;
+  }
+
   // Spring j's bound in the run: the smallest phi_c,j of its open members (+inf when none is),
   // and the member that holds it. Once that member has settled, the run's bound may rise to the
   // next open member's: a slow pull's steps then stop holding candidates for members already
   // broken (10^4 seeds: from every step after tau ~ 200 to about one step in ten).
   void raise_bound(int j) {
     const auto i = static_cast<std::size_t>(j - 1);
-    Buckets& b = buckets_[i];
+    Buckets& b = buckets_of(j);
     double lowest = std::numeric_limits<double>::infinity();
     int holder = -1;
     for (; b.first < b.count; ++b.first) {
@@ -232,23 +248,12 @@ class Ensemble {
   std::vector<bool> settled_;
   std::vector<std::uint64_t> seen_;
   std::uint64_t visit_ = 0;
-  // One spring's members bucketed by phi_c,j (a counting sort).
-  struct Buckets {
-    double lo = 0.0, scale = 0.0;
-    std::size_t count = 0, first = 0;  // first: no bucket before it holds an open member
-    std::vector<int> start;            // bucket k: members[start[k] .. start[k+1])
-    std::vector<int> members;
-    std::size_t of(double v) const {
-      if (!(v < std::numeric_limits<double>::infinity())) return count - 1;
-      if (scale == 0.0) return 0;
-      const double x = (v - lo) * scale;
-      return x <= 0.0 ? 0 : std::min(count - 1, static_cast<std::size_t>(x));
-    }
-  };
-  std::vector<Buckets> buckets_;
-  std::vector<double> bound_;  // spring j's bound in the run, at j - 1 (raise_bound) ...
-  std::vector<int> holder_;    // ... and the member that holds it (-1: none is open)
-  std::vector<int> widened_;   // springs whose bound rose since take_widened
+  std::vector<Buckets> buckets_;  // built by buckets_of, empty until then
+  std::vector<int> slot_;         // buckets_of's: each member's bucket of the spring at hand
+  std::vector<double> lo_, hi_;   // spring j's smallest and largest finite phi_c,j, at j - 1
+  std::vector<double> bound_;     // spring j's bound in the run, at j - 1 (raise_bound) ...
+  std::vector<int> holder_;       // ... and the member that holds it (-1: none is open)
+  std::vector<int> widened_;      // springs whose bound rose since take_widened
   std::vector<int> touched_;
   // Members settled whose crossing times are not bisected yet (finish), and their roots: member
   // k's are roots_[first_root of k .. first_root of k + 1).
