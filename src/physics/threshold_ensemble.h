@@ -13,10 +13,11 @@
 // Per spring the members are kept in buckets by phi_c,j, so a step touches only the members
 // about to break. A bound that a member no longer needs rises (Integrator::widen_bounds): once
 // the member holding spring j's loosest bound has settled, the run's bound becomes the next open
-// member's, so a slow pull's steps stop holding candidates for members already broken. A member
+// member's, so a slow pull's steps stop holding candidates for members already broken. A
+// spring's buckets are built when the run first needs them (a jerk needs 2 of 30). A member
 // settles as soon as it is known to cross; its crossing time is bisected later with 255 others
-// (crossing.h, finish_hermite_roots). 10^4 seeds of a slow pull cost ~1.8 x one run, a fast
-// pull's ~140 x (each seed's own bit-exact crossing time; tests/bench/README.md).
+// (crossing.h, finish_hermite_roots: 32 at a time on AVX-512). 10^4 seeds of a slow pull cost
+// ~1.7 x one run, a jerk's ~36 x (each seed's own bit-exact crossing time; tests/bench/README.md).
 #pragma once
 
 #include <atomic>
