@@ -142,8 +142,8 @@ class Ensemble {
   // A member's own candidates (the kernel's bound with its bounds), then Integrator's search
   // (crossing.h's earliest_crossing_within) in two parts: whether the member crosses in this
   // interval is known at once, and it settles; its crossing times are bisected later with many
-  // other members' (finish), a group of lanes at a time, which a slow pull, one member a step, could not do
-  // otherwise. The same roots and the same earliest rule, so the same spring and tau.
+  // other members' (finish), a group of lanes at a time, which a slow pull, one member a step,
+  // could not do otherwise. The same roots and the same earliest rule, so the same spring and tau.
   void settle(int m, const std::vector<detail::Candidate>& candidates, double slack, double ta,
               double tb, std::int64_t step) {
     Pending pending{m, ta, tb, step, roots_.size()};
