@@ -5,6 +5,7 @@
 // fixed corpus). muParser is not instrumented; the evaluator is, so coverage steers by it.
 #include <muParser.h>
 
+#include <cctype>
 #include <cmath>
 #include <numbers>
 
@@ -15,20 +16,32 @@ namespace {
 
 // Texts where muParser, once a comma has been read, lets through what it cannot evaluate and
 // gives what its stack holds: a sign at the very end ("1,-" is -1, "1,2,-" is 0, "1,t*-" is
-// -t) or a '?' right after a comma ("1,?2:3" is 0). Its defect; the evaluator refuses both,
-// the one place where they part on purpose.
+// -t), a '?' right after a comma ("1,?2:3" is 0), or a sign with no operand of its own right
+// before a '?' ("1,t*- ?3:4" is -t, "1,t-(- ?3:4)" is 3; found by this harness in CI, session
+// 14; without a comma muParser refuses it). Its defect; the evaluator refuses all three, the one
+// place where they part on purpose.
 bool muparser_defect(const std::string& text) {
   const auto blank = [](char c) { return static_cast<unsigned char>(c) <= 32; };
+  const auto sign = [](char c) { return c == '-' || c == '+'; };
+  // Whether c ends an operand (a number, a name, a closing parenthesis): a sign after it is
+  // binary, anywhere else unary.
+  const auto ends_operand = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == ')';
+  };
   const std::size_t comma = text.find(',');
   if (comma == std::string::npos) return false;
   std::size_t end = text.size();
   while (end > 0 && blank(text[end - 1])) --end;
-  if (end > comma && (text[end - 1] == '-' || text[end - 1] == '+')) return true;
+  if (end > comma && sign(text[end - 1])) return true;
   for (std::size_t i = comma; i < text.size(); ++i) {
-    if (text[i] != ',') continue;
+    if (text[i] != ',' && !sign(text[i])) continue;
     std::size_t j = i + 1;
     while (j < text.size() && blank(text[j])) ++j;
-    if (j < text.size() && text[j] == '?') return true;
+    if (j >= text.size() || text[j] != '?') continue;
+    if (text[i] == ',') return true;
+    std::size_t k = i;
+    while (k > 0 && blank(text[k - 1])) --k;
+    if (k > 0 && !ends_operand(text[k - 1])) return true;
   }
   return false;
 }
