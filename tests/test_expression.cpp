@@ -312,3 +312,25 @@ TEST_CASE("the evaluator's messages say what and where", "[expression]") {
   CHECK(message("1e").find("\"1e\" at position 0 is not a number") == 0);
   CHECK(message("").find("the expression is empty") == 0);
 }
+
+TEST_CASE("the evaluator refuses an expression nested too deep, and evaluates one just below",
+          "[expression]") {
+  // A thousand '(' overflowed the recursive parser's stack (fuzz_expression under ASan). The
+  // whole text is one level and each '(' opens another: below kMaxNesting levels the evaluator
+  // gives muParser's values, past it a message.
+  const int below = cb::expression::kMaxNesting - 1;
+  const std::string deep = std::string(below, '(') + "t+1" + std::string(below, ')');
+  const Outcome ours = with_ours(deep), reference = with_muparser(deep);
+  REQUIRE(ours.accepted);
+  REQUIRE(reference.accepted);
+  CHECK(ours.values == reference.values);
+  std::string powers = "2";
+  for (int i = 0; i < 1000; ++i) powers += "^2";
+  for (const std::string& text :
+       {std::string(1000, '(') + "t" + std::string(1000, ')'), std::string(5000, '('), powers}) {
+    const std::string message = with_ours(text).message;
+    INFO(message);
+    CHECK(message.find("the expression nests deeper than " +
+                       std::to_string(cb::expression::kMaxNesting) + " levels") == 0);
+  }
+}

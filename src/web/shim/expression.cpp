@@ -298,8 +298,28 @@ class Parser {
 
   // ---- the grammar, lowest precedence first ----
 
+  // One level deeper for the recursion that parses a nested expression, refused past
+  // kMaxNesting levels.
+  class Nested {
+   public:
+    explicit Nested(Parser& parser) : parser_(parser) {
+      if (++parser_.nesting_ > kMaxNesting)
+        parser_.fail("the expression nests deeper than " + std::to_string(kMaxNesting) +
+                         " levels at position " + parser_.position() +
+                         " (parentheses, functions, \"? :\" or \"^\")",
+                     parser_.pos_, parser_.here());
+    }
+    ~Nested() { --parser_.nesting_; }
+    Nested(const Nested&) = delete;
+    Nested& operator=(const Nested&) = delete;
+
+   private:
+    Parser& parser_;
+  };
+
   // v = a, where v is a defined variable written right before the '='.
   void assignment() {
+    const Nested level(*this);
     const std::string name = peek_name();
     double* var = name.empty() ? nullptr : variable(name);
     if (var) {
@@ -453,6 +473,7 @@ class Parser {
     if (peek_symbol() != "^") return;
     take(1);
     const std::size_t right = out_.size();
+    const Nested level(*this);  // the exponent: 2^2^2... recurses here
     sign();
     binary(Op::Pow, left, right);
   }
@@ -748,6 +769,7 @@ class Parser {
   std::size_t pos_ = 0;
   int depth_ = 0;
   int max_depth_ = 0;
+  int nesting_ = 0;  // Nested levels open
 };
 
 }  // namespace

@@ -49,6 +49,12 @@ class ExpressionError : public std::runtime_error {
   std::string token_;
 };
 
+// The deepest an expression may nest (parentheses, function calls, "? :" branches, chains of
+// "^"): the parser is recursive, and a text of a thousand '(' overflowed its stack (found by
+// fuzz_expression under ASan; the page's WebAssembly stack is smaller still). muParser has no
+// such limit; no drive needs a tenth of it.
+inline constexpr int kMaxNesting = 200;
+
 class Expression {
  public:
   // The variable is read (and an assignment writes it) through the pointer at every
