@@ -132,6 +132,9 @@ Forcing make_forcing(const DriveDesc& d) {
     }
   }
   forcing.f = [d](double tau) { return drive_value(d, tau); };
+  forcing.f_many = [d](const double* tau, double* out, std::size_t count) {
+    for (std::size_t i = 0; i < count; ++i) out[i] = drive_value(d, tau[i]);
+  };
   std::sort(forcing.breakpoints.begin(), forcing.breakpoints.end());
   forcing.breakpoints.erase(std::unique(forcing.breakpoints.begin(), forcing.breakpoints.end()),
                             forcing.breakpoints.end());

@@ -26,6 +26,15 @@ struct Forcing {
 
   double operator()(double tau) const { return f ? f(tau) : 0.0; }
 
+  // f at many times: f_many when set (make_forcing sets it for the closed-form drives: one call
+  // where the ensemble lanes made one per value, a twentieth of a sweep's time), f one by one
+  // otherwise. The same values as f, as f_many computes each one as f does.
+  std::function<void(const double* tau, double* out, std::size_t count)> f_many;
+  void values(const double* tau, double* out, std::size_t count) const {
+    if (f_many) return f_many(tau, out, count);
+    for (std::size_t i = 0; i < count; ++i) out[i] = (*this)(tau[i]);
+  }
+
   // Whether the step [t0, t1] is one plain interval: no breakpoint in (t0 + snap, t1 + 2 snap]
   // (none cuts it, its end is not one, with a margin for the rounding of |b - t1| <= snap) and
   // no kick left before t1 - snap (none is due at t0, none cuts it). `next_breakpoint` is a

@@ -98,6 +98,33 @@ bool begin_plain_step(Lane& lane) {
   return true;
 }
 
+// How many of a lane's next steps (at most `limit`) are plain ones (begin_plain_step's) that
+// end before its last step, without changing the lane: a run of them goes to the kernel in one
+// go (run_first_breaks_in_lanes). None for a lane with a pull string, whose crossing the
+// kernel's bound does not see (first_crossing tests it every step).
+int plain_steps_ahead(const Lane& lane, int limit) {
+  if (!lane.active || !lane.cuts.empty() || !lane.breakpoints_sorted || lane.pull) return 0;
+  const std::int64_t left = lane.job.last_step - lane.step;
+  limit = static_cast<int>(std::min<std::int64_t>(limit, left));
+  const double dt = lane.job.dt;
+  const double snap = 1e-9 * dt;
+  const Forcing& forcing = lane.job.forcing;
+  std::size_t next_breakpoint = lane.next_breakpoint;
+  // Past the last breakpoint and kick (a ramp after tau = 0) every step is plain.
+  const double now = static_cast<double>(lane.step) * dt;
+  while (next_breakpoint < forcing.breakpoints.size() &&
+         forcing.breakpoints[next_breakpoint] <= now + snap)
+    ++next_breakpoint;
+  if (next_breakpoint == forcing.breakpoints.size() && lane.next_kick == forcing.kicks.size())
+    return limit;
+  for (int s = 0; s < limit; ++s) {
+    const double t0 = static_cast<double>(lane.step + s) * dt;
+    const double t1 = static_cast<double>(lane.step + s + 1) * dt;
+    if (!lane.job.forcing.plain_step(next_breakpoint, lane.next_kick, t0, t1, snap)) return s;
+  }
+  return limit;
+}
+
 // Integrator::step's split of [t0, t1] at the drive's jumps, kinks and kicks strictly inside.
 void begin_step(Lane& lane) {
   const double dt = lane.job.dt;
@@ -220,47 +247,125 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
   in.slack = slack, in.threshold = threshold, in.p_start = p0, in.m_start = m0;
   in.bad = bad, in.near = near, in.p_end = p1, in.m_end = m1;
   const int end_row = beads * kLanes;
-  while (std::any_of(std::begin(lanes), std::end(lanes), [](const Lane& l) { return l.active; })) {
-    if (cancel && cancel->load(std::memory_order_relaxed)) return false;
-    // Each lane's next interval, as Integrator::step would take it.
-    for (int k = 0; k < kLanes; ++k) {
-      Lane& lane = lanes[k];
-      if (!lane.active) {
-        g2[k] = h[k] = f0[k] = f1[k] = f2[k] = p0[k] = m0[k] = 0.0;
-        threshold[k] = kInf;
-        continue;
-      }
-      if (lane.cuts.empty() && !begin_plain_step(lane)) begin_step(lane);
-      const double snap = 1e-9 * lane.job.dt;
-      if (!lane.plain) apply_kicks(lane, lane.from + snap, a.v0[end_row + k]);
-      lane.ta = lane.from;
-      lane.tb = lane.cuts[lane.cut];
-      lane.end_is_breakpoint = !lane.plain && on_breakpoint(lane.job.forcing, lane.tb, snap);
-      const double ta = lane.ta, tb = lane.tb;
-      h[k] = tb - ta;
-      g2[k] = 2.0 * lane.job.params.gamma;
-      f0[k] = lane.drive(lane.job.forcing, ta);
-      f1[k] = lane.drive(lane.job.forcing, 0.5 * (ta + tb));
-      f2[k] = lane.drive(lane.job.forcing, lane.end_is_breakpoint ? std::nextafter(tb, ta) : tb);
-      threshold[k] = lane.checks ? lane.nearest_bound : kInf;
-      p0[k] = lane.p_max;
-      m0[k] = lane.m_max;
-    }
-    // What follows from each lane's h, in a loop of its own that the compiler vectorises (the
-    // divisions were the driver's costliest instructions when each lane did its own).
+  // The kernel's per-lane inputs that follow from h, in a loop of their own that the compiler
+  // vectorises (the divisions were the driver's costliest instructions when each lane did its
+  // own); and the kernel called on the lanes' current arrays.
+  auto integrate = [&] {
     for (int k = 0; k < kLanes; ++k) {
       h2[k] = 0.5 * h[k];
       h6[k] = h[k] / 6.0;
       slack[k] = detail::hermite_slack(h[k]);
     }
+    in.x0 = a.x0.data(), in.v0 = a.v0.data();
+    in.xn = a.xn.data(), in.vn = a.vn.data();
+    kernel(in);
+  };
+  // A run of plain steps for every lane (plain_steps_ahead), each one's times and drive values
+  // found first, then the kernel called once a step, with no lane's bookkeeping in between: at
+  // N = 30 that bookkeeping was a fifth of a sweep's time (tests/bench/README.md, session 15).
+  // The run stops after a step in which a lane may cross or may not be finite. The lanes are
+  // then left as the one-step path leaves them after the kernel: their last step begun, its
+  // interval in ta, tb, f2 and the arrays (x0: its start, xn: its end), every earlier step
+  // done. Each step's inputs are those the one-step path gives it, so the bits are the same.
+  constexpr int kMaxRun = 16;
+  alignas(64) double run_h[kMaxRun][kLanes], run_f0[kMaxRun][kLanes], run_f1[kMaxRun][kLanes],
+      run_f2[kMaxRun][kLanes];
+  auto integrate_run = [&](int run) {
+    for (int k = 0; k < kLanes; ++k) {
+      Lane& lane = lanes[k];
+      g2[k] = lane.active ? 2.0 * lane.job.params.gamma : 0.0;
+      threshold[k] = lane.active && lane.checks ? lane.nearest_bound : kInf;
+      p0[k] = lane.active ? lane.p_max : 0.0;
+      m0[k] = lane.active ? lane.m_max : 0.0;
+      if (!lane.active) {
+        for (int s = 0; s < run; ++s)
+          run_h[s][k] = run_f0[s][k] = run_f1[s][k] = run_f2[s][k] = 0.0;
+        continue;
+      }
+      // The run's step ends t[0 .. run] and middles, and f at all of them in one call.
+      const double dt = lane.job.dt;
+      double at[2 * kMaxRun + 1], f[2 * kMaxRun + 1];
+      for (int s = 0; s <= run; ++s) at[s] = static_cast<double>(lane.step + s) * dt;
+      for (int s = 0; s < run; ++s) at[run + 1 + s] = 0.5 * (at[s] + at[s + 1]);
+      lane.job.forcing.values(at, f, static_cast<std::size_t>(2 * run + 1));
+      for (int s = 0; s < run; ++s) {
+        run_h[s][k] = at[s + 1] - at[s];
+        run_f0[s][k] = f[s];
+        run_f1[s][k] = f[run + 1 + s];
+        run_f2[s][k] = f[s + 1];
+      }
+      lane.drive.remember(at[run], f[run]);
+    }
+    int done = 0;
+    while (true) {
+      std::copy(std::begin(run_h[done]), std::end(run_h[done]), h);
+      std::copy(std::begin(run_f0[done]), std::end(run_f0[done]), f0);
+      std::copy(std::begin(run_f1[done]), std::end(run_f1[done]), f1);
+      std::copy(std::begin(run_f2[done]), std::end(run_f2[done]), f2);
+      integrate();
+      ++done;
+      bool stop = done == run;
+      for (int k = 0; k < kLanes; ++k) stop |= (bad[k] | near[k]) != 0;
+      if (stop) break;
+      a.x0.swap(a.xn);
+      a.v0.swap(a.vn);
+      std::copy(std::begin(p1), std::end(p1), p0);
+      std::copy(std::begin(m1), std::end(m1), m0);
+    }
+    // The steps before the last one done, then the last one begun (begin_plain_step's cursor
+    // only moves forward with the clock, so one call finds where the steps between leave it).
+    for (Lane& lane : lanes) {
+      if (!lane.active) continue;
+      lane.step += done - 1;
+      const bool plain = begin_plain_step(lane);
+      assert(plain);
+      (void)plain;
+      lane.ta = lane.from;
+      lane.tb = lane.cuts[0];
+      lane.end_is_breakpoint = false;
+    }
+    for (int k = 0; k < kLanes; ++k)
+      if (lanes[k].active) lanes[k].p_max = p0[k], lanes[k].m_max = m0[k];
+  };
+  while (std::any_of(std::begin(lanes), std::end(lanes), [](const Lane& l) { return l.active; })) {
+    if (cancel && cancel->load(std::memory_order_relaxed)) return false;
     // The PerBead stencil as soon as one lane needs it (uniform lanes hold ones: same bits).
     const bool per_bead = std::any_of(std::begin(lanes), std::end(lanes),
                                       [](const Lane& l) { return l.active && l.coef.per_bead; });
     in.inv_mass = per_bead ? a.inv_mass.data() : nullptr;
     in.stiffness = per_bead ? a.stiffness.data() : nullptr;
-    in.x0 = a.x0.data(), in.v0 = a.v0.data();
-    in.xn = a.xn.data(), in.vn = a.vn.data();
-    kernel(in);
+    int run = kMaxRun;
+    for (const Lane& lane : lanes)
+      if (lane.active) run = std::min(run, plain_steps_ahead(lane, kMaxRun));
+    if (run >= 2) {
+      integrate_run(run);
+    } else {
+      // Each lane's next interval, as Integrator::step would take it.
+      for (int k = 0; k < kLanes; ++k) {
+        Lane& lane = lanes[k];
+        if (!lane.active) {
+          g2[k] = h[k] = f0[k] = f1[k] = f2[k] = p0[k] = m0[k] = 0.0;
+          threshold[k] = kInf;
+          continue;
+        }
+        if (lane.cuts.empty() && !begin_plain_step(lane)) begin_step(lane);
+        const double snap = 1e-9 * lane.job.dt;
+        if (!lane.plain) apply_kicks(lane, lane.from + snap, a.v0[end_row + k]);
+        lane.ta = lane.from;
+        lane.tb = lane.cuts[lane.cut];
+        lane.end_is_breakpoint = !lane.plain && on_breakpoint(lane.job.forcing, lane.tb, snap);
+        const double ta = lane.ta, tb = lane.tb;
+        h[k] = tb - ta;
+        g2[k] = 2.0 * lane.job.params.gamma;
+        f0[k] = lane.drive(lane.job.forcing, ta);
+        f1[k] = lane.drive(lane.job.forcing, 0.5 * (ta + tb));
+        f2[k] = lane.drive(lane.job.forcing, lane.end_is_breakpoint ? std::nextafter(tb, ta) : tb);
+        threshold[k] = lane.checks ? lane.nearest_bound : kInf;
+        p0[k] = lane.p_max;
+        m0[k] = lane.m_max;
+      }
+      integrate();
+    }
 
     // Every lane's new state becomes the current one; a lane that ended is cleared after.
     bool ended[kLanes] = {};
