@@ -42,12 +42,22 @@ struct Forcing {
   // first kick not yet applied. Integrator::step and the ensemble lanes (lanes.cpp) both ask.
   bool plain_step(std::size_t& next_breakpoint, std::size_t next_kick, double t0, double t1,
                   double snap) const {
-    while (next_breakpoint < breakpoints.size() && breakpoints[next_breakpoint] <= t0 + snap)
-      ++next_breakpoint;
+    pass_breakpoints(next_breakpoint, t0, snap);
     const bool no_breakpoint =
         next_breakpoint == breakpoints.size() || breakpoints[next_breakpoint] > t1 + 2.0 * snap;
     const bool no_kick = next_kick == kicks.size() || kicks[next_kick].tau >= t1 - snap;
     return no_breakpoint && no_kick;
+  }
+  // The cursor moved past the breakpoints at or before t0 (+ snap).
+  void pass_breakpoints(std::size_t& next_breakpoint, double t0, double snap) const {
+    while (next_breakpoint < breakpoints.size() && breakpoints[next_breakpoint] <= t0 + snap)
+      ++next_breakpoint;
+  }
+  // Whether every step from t0 on is plain: no breakpoint after t0 (+ snap), no kick left.
+  bool plain_from(std::size_t next_breakpoint, std::size_t next_kick, double t0,
+                  double snap) const {
+    pass_breakpoints(next_breakpoint, t0, snap);
+    return next_breakpoint == breakpoints.size() && next_kick == kicks.size();
   }
 };
 

@@ -109,14 +109,11 @@ int plain_steps_ahead(const Lane& lane, int limit) {
   const double dt = lane.job.dt;
   const double snap = 1e-9 * dt;
   const Forcing& forcing = lane.job.forcing;
-  std::size_t next_breakpoint = lane.next_breakpoint;
   // Past the last breakpoint and kick (a ramp after tau = 0) every step is plain.
-  const double now = static_cast<double>(lane.step) * dt;
-  while (next_breakpoint < forcing.breakpoints.size() &&
-         forcing.breakpoints[next_breakpoint] <= now + snap)
-    ++next_breakpoint;
-  if (next_breakpoint == forcing.breakpoints.size() && lane.next_kick == forcing.kicks.size())
+  if (forcing.plain_from(lane.next_breakpoint, lane.next_kick, static_cast<double>(lane.step) * dt,
+                         snap))
     return limit;
+  std::size_t next_breakpoint = lane.next_breakpoint;
   for (int s = 0; s < limit; ++s) {
     const double t0 = static_cast<double>(lane.step + s) * dt;
     const double t1 = static_cast<double>(lane.step + s + 1) * dt;
@@ -247,6 +244,15 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
   in.slack = slack, in.threshold = threshold, in.p_start = p0, in.m_start = m0;
   in.bad = bad, in.near = near, in.p_end = p1, in.m_end = m1;
   const int end_row = beads * kLanes;
+  // Lane k's inputs that hold for its whole step: friction, its nearest bound (none: +inf), and
+  // the largest |phi|, |dphi/dtau| at the start; an idle lane rests at +0 with no bound.
+  auto set_lane_constants = [&](int k) {
+    const Lane& lane = lanes[k];
+    g2[k] = lane.active ? 2.0 * lane.job.params.gamma : 0.0;
+    threshold[k] = lane.active && lane.checks ? lane.nearest_bound : kInf;
+    p0[k] = lane.active ? lane.p_max : 0.0;
+    m0[k] = lane.active ? lane.m_max : 0.0;
+  };
   // The kernel's per-lane inputs that follow from h, in a loop of their own that the compiler
   // vectorises (the divisions were the driver's costliest instructions when each lane did its
   // own); and the kernel called on the lanes' current arrays.
@@ -273,10 +279,7 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
   auto integrate_run = [&](int run) {
     for (int k = 0; k < kLanes; ++k) {
       Lane& lane = lanes[k];
-      g2[k] = lane.active ? 2.0 * lane.job.params.gamma : 0.0;
-      threshold[k] = lane.active && lane.checks ? lane.nearest_bound : kInf;
-      p0[k] = lane.active ? lane.p_max : 0.0;
-      m0[k] = lane.active ? lane.m_max : 0.0;
+      set_lane_constants(k);
       if (!lane.active) {
         for (int s = 0; s < run; ++s)
           run_h[s][k] = run_f0[s][k] = run_f1[s][k] = run_f2[s][k] = 0.0;
@@ -344,8 +347,8 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
       for (int k = 0; k < kLanes; ++k) {
         Lane& lane = lanes[k];
         if (!lane.active) {
-          g2[k] = h[k] = f0[k] = f1[k] = f2[k] = p0[k] = m0[k] = 0.0;
-          threshold[k] = kInf;
+          set_lane_constants(k);
+          h[k] = f0[k] = f1[k] = f2[k] = 0.0;
           continue;
         }
         if (lane.cuts.empty() && !begin_plain_step(lane)) begin_step(lane);
@@ -356,13 +359,10 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
         lane.end_is_breakpoint = !lane.plain && on_breakpoint(lane.job.forcing, lane.tb, snap);
         const double ta = lane.ta, tb = lane.tb;
         h[k] = tb - ta;
-        g2[k] = 2.0 * lane.job.params.gamma;
         f0[k] = lane.drive(lane.job.forcing, ta);
         f1[k] = lane.drive(lane.job.forcing, 0.5 * (ta + tb));
         f2[k] = lane.drive(lane.job.forcing, lane.end_is_breakpoint ? std::nextafter(tb, ta) : tb);
-        threshold[k] = lane.checks ? lane.nearest_bound : kInf;
-        p0[k] = lane.p_max;
-        m0[k] = lane.m_max;
+        set_lane_constants(k);  // after the kicks, which make m_max unknown (+inf)
       }
       integrate();
     }
