@@ -161,7 +161,7 @@ void BM_FputRK4(benchmark::State& state) {
 // unbreakable chains side by side, each from rest for steps_per_iteration(N) steps (a chain of
 // 30 beads leaves the subnormal band within ~3000 of its 32768 steps). bead_steps counts every
 // lane's beads, so it compares with one chain's RK4 bead for bead.
-void BM_LanesRK4(benchmark::State& state) {
+void run_lanes_rk4(benchmark::State& state, double gamma) {
   const int beads = static_cast<int>(state.range(0));
   const auto simd = static_cast<cb::SimdPath>(state.range(1));
   if (!cb::simd_supported(simd)) {
@@ -177,7 +177,7 @@ void BM_LanesRK4(benchmark::State& state) {
       cb::LaneJob job;
       job.id = static_cast<std::size_t>(given++);
       job.params.beads = beads;
-      job.params.gamma = kGamma;
+      job.params.gamma = gamma;
       job.forcing = ramp_forcing();
       job.dt = kDt;
       job.last_step = steps;
@@ -187,6 +187,15 @@ void BM_LanesRK4(benchmark::State& state) {
         beads, next, [](std::size_t, const cb::LaneEnd&) {}, simd);
   }
   set_counters(state, std::int64_t{beads} * kValues, steps, 32);
+}
+void BM_LanesRK4(benchmark::State& state) {
+  run_lanes_rk4(state, kGamma);
+}
+// The same at gamma = 0, the 420-value sweep's chain (bench_sweep): the lanes' frictionless
+// kernel (stencil.inc's NoFriction) and their runs of plain steps, without a sweep's other
+// costs, for A/B runs of a kernel change (tests/bench/README.md, session 16).
+void BM_LanesRK4Frictionless(benchmark::State& state) {
+  run_lanes_rk4(state, 0.0);
 }
 
 // Args: {beads}. One thread, this file's flags (the physics core's: baseline x86-64).
@@ -283,6 +292,7 @@ BENCHMARK(BM_LanesRK4)
     ->ArgNames({"N", "simd"})
     ->ArgsProduct({{30, 1'000}, {0, 1, 2}})
     ->Apply(common);
+BENCHMARK(BM_LanesRK4Frictionless)->ArgNames({"N", "simd"})->ArgsProduct({{30}, {1, 2}})->Apply(common);
 BENCHMARK(BM_FusedFromRest)->ArgNames({"N", "ftz"})->ArgsProduct({{1'000}, {0, 1}})->Apply(common);
 BENCHMARK(BM_TriadThreads)->Args({10'000'000, 2})->Apply(common);
 // Every instruction set at every N on one thread; two threads only where the Integrator
