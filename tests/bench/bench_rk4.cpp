@@ -292,7 +292,10 @@ BENCHMARK(BM_LanesRK4)
     ->ArgNames({"N", "simd"})
     ->ArgsProduct({{30, 1'000}, {0, 1, 2}})
     ->Apply(common);
-BENCHMARK(BM_LanesRK4Frictionless)->ArgNames({"N", "simd"})->ArgsProduct({{30}, {1, 2}})->Apply(common);
+BENCHMARK(BM_LanesRK4Frictionless)
+    ->ArgNames({"N", "simd"})
+    ->ArgsProduct({{30}, {1, 2}})
+    ->Apply(common);
 BENCHMARK(BM_FusedFromRest)->ArgNames({"N", "ftz"})->ArgsProduct({{1'000}, {0, 1}})->Apply(common);
 BENCHMARK(BM_TriadThreads)->Args({10'000'000, 2})->Apply(common);
 // Every instruction set at every N on one thread; two threads only where the Integrator
