@@ -117,7 +117,7 @@ int plain_steps_ahead(const Lane& lane, int limit) {
   for (int s = 0; s < limit; ++s) {
     const double t0 = static_cast<double>(lane.step + s) * dt;
     const double t1 = static_cast<double>(lane.step + s + 1) * dt;
-    if (!lane.job.forcing.plain_step(next_breakpoint, lane.next_kick, t0, t1, snap)) return s;
+    if (!forcing.plain_step(next_breakpoint, lane.next_kick, t0, t1, snap)) return s;
   }
   return limit;
 }
