@@ -12,6 +12,7 @@
 
 #include "physics/coefficients.h"
 #include "physics/crossing.h"
+#include "physics/lane_far.h"
 #include "physics/lanes_interval.h"
 
 namespace cb {
@@ -32,6 +33,7 @@ struct Lane {
   LaneJob job;
   ChainCoefficients coef;      // the job's constants, built once when the lane takes it
   double nearest_bound = 0.0;  // coef.nearest_bound()
+  detail::FarMap far_map;      // proves a run far from the bounds (lane_far.h)
   bool checks = false;         // springs can break (the fused kernel's threshold test)
   bool pull = false;           // the pull string can break
   std::int64_t step = 0;       // steps done
@@ -203,7 +205,8 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
   constexpr double kInf = std::numeric_limits<double>::infinity();
   alignas(64) double g2[kLanes], h[kLanes], h2[kLanes], h6[kLanes], f0[kLanes], f1[kLanes],
       f2[kLanes], slack[kLanes], threshold[kLanes], p0[kLanes], m0[kLanes], p1[kLanes], m1[kLanes];
-  alignas(64) int bad[kLanes], near[kLanes];
+  alignas(64) int bad[kLanes], near[kLanes], far[kLanes];
+  alignas(64) double p_far[kLanes], m_far[kLanes];
 
   // Gives lane k the next job, or leaves it idle (at rest, h = 0: it stays at +0).
   bool more = true;
@@ -230,6 +233,7 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
       a.set_coefficients(k, lane.coef);
       lane.checks = lane.coef.checks;
       lane.nearest_bound = lane.coef.nearest_bound();
+      lane.far_map = detail::FarMap(lane.coef, p.gamma, lane.job.dt);
       lane.pull = p.pull_string && p.breakable();
       lane.breakpoints_sorted =
           std::is_sorted(lane.job.forcing.breakpoints.begin(), lane.job.forcing.breakpoints.end());
@@ -243,6 +247,7 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
   in.g2 = g2, in.h = h, in.h2 = h2, in.h6 = h6, in.f0 = f0, in.f1 = f1, in.f2 = f2;
   in.slack = slack, in.threshold = threshold, in.p_start = p0, in.m_start = m0;
   in.bad = bad, in.near = near, in.p_end = p1, in.m_end = m1;
+  in.p_far = p_far, in.m_far = m_far;
   const int end_row = beads * kLanes;
   // Lane k's inputs that hold for its whole step: friction, its nearest bound (none: +inf), and
   // the largest |phi|, |dphi/dtau| at the start; an idle lane rests at +0 with no bound.
@@ -274,6 +279,7 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
   // interval in ta, tb, f2 and the arrays (x0: its start, xn: its end), every earlier step
   // done. Each step's inputs are those the one-step path gives it, so the bits are the same.
   constexpr int kMaxRun = 16;
+  static_assert(kMaxRun - 1 <= detail::kMaxFarSteps);
   alignas(64) double run_h[kMaxRun][kLanes], run_f0[kMaxRun][kLanes], run_f1[kMaxRun][kLanes],
       run_f2[kMaxRun][kLanes];
   auto integrate_run = [&](int run) {
@@ -283,6 +289,7 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
       if (!lane.active) {
         for (int s = 0; s < run; ++s)
           run_h[s][k] = run_f0[s][k] = run_f1[s][k] = run_f2[s][k] = 0.0;
+        far[k] = 1, p_far[k] = m_far[k] = 0.0;  // at rest at +0, its bounds are 0 exactly
         continue;
       }
       // The run's step ends t[0 .. run] and middles, and f at all of them in one call.
@@ -291,16 +298,27 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
       for (int s = 0; s <= run; ++s) at[s] = static_cast<double>(lane.step + s) * dt;
       for (int s = 0; s < run; ++s) at[run + 1 + s] = 0.5 * (at[s] + at[s + 1]);
       lane.job.forcing.values(at, f, static_cast<std::size_t>(2 * run + 1));
+      double h_max = 0.0, f_max = 0.0;
       for (int s = 0; s < run; ++s) {
         run_h[s][k] = at[s + 1] - at[s];
         run_f0[s][k] = f[s];
         run_f1[s][k] = f[run + 1 + s];
         run_f2[s][k] = f[s + 1];
+        h_max = std::max(h_max, run_h[s][k]);
       }
+      for (int i = 0; i <= 2 * run; ++i) f_max = std::max(f_max, std::abs(f[i]));
       lane.drive.remember(at[run], f[run]);
+      // Every step but the last far from the bounds (lane_far.h): the kernel may skip theirs.
+      // The state before the last step bounds every earlier one.
+      const detail::FarMap::Bounds bounds =
+          lane.far_map.after(run - 1, lane.p_max, lane.m_max, f_max);
+      const double h_bound = lane.far_map.step_bound();
+      far[k] = h_max <= h_bound && detail::proven_far(bounds, h_bound, threshold[k]);
+      p_far[k] = bounds.p, m_far[k] = bounds.m;
     }
     int done = 0;
     while (true) {
+      in.far = done + 1 < run ? far : nullptr;  // the last step takes its bounds
       std::copy(std::begin(run_h[done]), std::end(run_h[done]), h);
       std::copy(std::begin(run_f0[done]), std::end(run_f0[done]), f0);
       std::copy(std::begin(run_f1[done]), std::end(run_f1[done]), f1);
@@ -337,6 +355,7 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
                                       [](const Lane& l) { return l.active && l.coef.per_bead; });
     in.inv_mass = per_bead ? a.inv_mass.data() : nullptr;
     in.stiffness = per_bead ? a.stiffness.data() : nullptr;
+    in.far = nullptr;
     int run = kMaxRun;
     for (const Lane& lane : lanes)
       if (lane.active) run = std::min(run, plain_steps_ahead(lane, kMaxRun));

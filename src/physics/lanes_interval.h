@@ -26,6 +26,11 @@ struct LaneInterval {
   // at row j, K_{N+1} = 0 at row N + 1; a Uniform lane of a PerBead call holds ones. Null: the
   // Uniform policy for every lane.
   const double *inv_mass = nullptr, *stiffness = nullptr;
+  // Per lane, 1 when a proof (lane_far.h) says the lane stays far from its bounds and finite
+  // over this interval, with p_far, m_far bounds on its end's largest |phi_j|, |dphi_j/dtau|. A
+  // block whose lanes are all far skips its bounds and reports those. Null: no lane is far.
+  const int* far = nullptr;
+  const double *p_far = nullptr, *m_far = nullptr;
   // Out, per lane: 1 if a new value may not be finite; 1 if a spring may reach its threshold
   // (then the springs are tested one by one); the largest |phi_j|, |dphi_j/dtau| at the end.
   int *bad = nullptr, *near = nullptr;
