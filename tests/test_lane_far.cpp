@@ -159,3 +159,19 @@ TEST_CASE("The far proof: far lanes pass, near ones and unproven maps do not", "
   fput.anharmonic = true;
   CHECK(std::isinf(cb::detail::FarMap(fput, 0.0, 0.01).after(1, 0.0, 0.0, 0.0).p));
 }
+
+TEST_CASE("The far proof's force bound: the largest |f|, NaN if any is", "[lanes][far]") {
+  const double f[] = {0.5, -3.0, 2.0, -0.25, 1.0};
+  for (int n = 1; n <= 5; ++n) {
+    double expected = 0.0;
+    for (int i = 0; i < n; ++i) expected = std::max(expected, std::abs(f[i]));
+    CHECK(cb::detail::largest_magnitude(f, n) == expected);
+  }
+  for (int at = 0; at < 5; ++at) {
+    double g[] = {0.5, -3.0, 2.0, -0.25, 1.0};
+    g[at] = NAN;
+    CHECK(std::isnan(cb::detail::largest_magnitude(g, 5)));
+  }
+  const double huge[] = {1.0, -INFINITY};
+  CHECK(cb::detail::largest_magnitude(huge, 2) == INFINITY);
+}

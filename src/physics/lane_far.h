@@ -56,6 +56,10 @@ class FarMap {
   std::array<std::array<double, 2>, kMaxFarSteps> force_{};
 };
 
+// max_i |v_i| of n values (the run's drive: FarMap::after's f_max), NaN if any is NaN (which
+// std::max would pass over, and a NaN force makes no state finite).
+double largest_magnitude(const double* v, int n);
+
 // Whether bounds p, m (FarMap::after) keep a lane's steps of length <= h from its nearest
 // bound `threshold` by the kernel's own test, and keep every value finite.
 bool proven_far(FarMap::Bounds b, double h, double threshold);

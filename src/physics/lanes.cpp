@@ -298,7 +298,7 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
       for (int s = 0; s <= run; ++s) at[s] = static_cast<double>(lane.step + s) * dt;
       for (int s = 0; s < run; ++s) at[run + 1 + s] = 0.5 * (at[s] + at[s + 1]);
       lane.job.forcing.values(at, f, static_cast<std::size_t>(2 * run + 1));
-      double h_max = 0.0, f_max = 0.0;
+      double h_max = 0.0;
       for (int s = 0; s < run; ++s) {
         run_h[s][k] = at[s + 1] - at[s];
         run_f0[s][k] = f[s];
@@ -306,7 +306,7 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
         run_f2[s][k] = f[s + 1];
         h_max = std::max(h_max, run_h[s][k]);
       }
-      for (int i = 0; i <= 2 * run; ++i) f_max = std::max(f_max, std::abs(f[i]));
+      const double f_max = detail::largest_magnitude(f, 2 * run + 1);
       lane.drive.remember(at[run], f[run]);
       // Every step but the last far from the bounds (lane_far.h): the kernel may skip theirs.
       // The state before the last step bounds every earlier one.
