@@ -32,6 +32,27 @@ def run(args, cwd, **kw):
                           text=True, **kw)
 
 
+def catching(p):
+    """Waits until process p catches SIGINT, SIGTERM and SIGUSR1 (the SigCgt mask of its
+    /proc status): a signal sent before would meet the default action and kill it. The
+    delays after this count from the run's start, not from the exec, so a loaded machine
+    (ctest -j, a sanitizer's slower start) does not change what they mean."""
+    want = sum(1 << (s - 1) for s in (signal.SIGINT, signal.SIGTERM, signal.SIGUSR1))
+    for _ in range(6000):
+        try:
+            status = pathlib.Path(f"/proc/{p.pid}/status").read_text()
+        except FileNotFoundError:
+            break
+        caught = next(int(line.split()[1], 16) for line in status.splitlines()
+                      if line.startswith("SigCgt:"))
+        if caught & want == want:
+            return
+        if p.poll() is not None:
+            break
+        time.sleep(0.01)
+    raise AssertionError(f"the run never caught its signals (exit {p.poll()})")
+
+
 _REFERENCES = {}
 
 
@@ -54,6 +75,7 @@ def stop_and_resume(tmp_path, name, scene, opts, stop, extra=()):
     p = subprocess.Popen([EXE, "run", str(scene), *opts, "--csv", "out.csv", "--checkpoint",
                           "run.ckpt", *extra, "-q"], cwd=work, stdout=subprocess.PIPE,
                          stderr=subprocess.PIPE, text=True)
+    catching(p)
     stop(p, work)
     out, err = p.communicate()
     if p.returncode == 0:  # finished before the signal: nothing to resume
@@ -280,6 +302,7 @@ def checkpointed(tmp_path, scene_path, outputs=("--csv", "out.csv")):
     p = subprocess.Popen([EXE, "run", str(scene_path), *SMALL, *outputs,
                           "--checkpoint", "run.ckpt", "-q"], cwd=work, stdout=subprocess.PIPE,
                          stderr=subprocess.PIPE)
+    catching(p)
     time.sleep(0.5)
     p.send_signal(signal.SIGTERM)
     p.communicate()
@@ -346,9 +369,12 @@ def test_a_checkpoint_that_cannot_be_written_keeps_the_previous_one(tmp_path):
     p = subprocess.Popen([EXE, "run", "--resume", "run.ckpt", "--checkpoint-every", "0", "-q"],
                          cwd=work, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                          preexec_fn=small_files)
-    time.sleep(0.3)
+    catching(p)
+    # The first line on stderr is the first periodic checkpoint that failed; then the stop.
+    first = p.stderr.readline()
     p.send_signal(signal.SIGTERM)
     _, err = p.communicate()
+    err = first + err
     # Periodic checkpoints failed and the run went on; the one on SIGTERM failed: exit 2.
     assert "the run goes on" in err and p.returncode == 2, err
     assert "writing the checkpoint failed" in err
