@@ -73,6 +73,8 @@ WALL_CLOCK_TESTS='SIGINT stops|^interrupted |Ctrl-C|an interrupted run|pacer adv
 HEAVY_BYTE_CHECKS='^temporal blocking gives the bytes of one step at a time on every SIMD path$|^an unequal chain with per-spring thresholds: every path gives the tiled bits$'
 HEAVY_BYTE_CHECKS+="|^every SIMD path reproduces the bytes of the integrator before the SIMD work\$"
 HEAVY_BYTE_CHECKS+="|^fput: a = b = 0 through the Anharmonic policy gives the harmonic chain's bytes\$"
+# And one figure check whose code the goldens and the figures command run under ASan as well.
+HEAVY_BYTE_CHECKS+="|^Figures: the light theme's border is its background, all around\$"
 
 asan() {
   stamp "asan: build"
@@ -93,7 +95,9 @@ asan() {
   # And two that repeat, at 20000-40000 steps, kernels the suite runs under ASan elsewhere: the
   # frozen hashes of every path (104 s; the paths run in "every SIMD path the CPU supports gives
   # the same bytes as SSE2" and the small-chain case, both kept) and fput's a = b = 0 bytes
-  # (92 s; the Anharmonic kernels run in "fput: every kernel path and SIMD path ...").
+  # (92 s; the Anharmonic kernels run in "fput: every kernel path and SIMD path ..."). And the
+  # light theme's border (81 s: every figure drawn again in the light theme, by the code that
+  # "Figures match their goldens" and the figures command run under ASan).
   # Two passes: the tests that time a signal or the wall clock (WALL_CLOCK_TESTS) alone, one
   # at a time; the rest two at a time, one per core (the suite is ~18 CPU minutes under ASan).
   ctest --test-dir build-asan --output-on-failure --timeout 1500 -j "${CI_JOBS:-$(nproc)}" \
@@ -116,6 +120,8 @@ nice_build() {  # folder, targets...
 # signals the child after a fixed 0.5 s, before a TSan build, ~10x slower, has its handler
 # in place; the [render_cli] one wants the stop within 2 s).
 TSAN_TESTS="[cli]~SIGINT*,[rk4],[blocking],[render_cli]~*Ctrl-C*,[video],[snapshot],[viewer]"
+TSAN_SLOW="^figures command|^the docked panels cover|^temporal blocking gives|^with the overlay"
+TSAN_SLOW+="|^snapshot --overlay|^a scripted view snapshot|^a resize while playing"
 
 tsan() {
   stamp "tsan: build"
@@ -151,8 +157,10 @@ tsan() {
     echo "sanitizers: tsan: no test case matches $TSAN_TESTS" >&2
     return 1
   fi
-  # The wall-clock test cases after the pool, one at a time.
-  { grep -Ev "$WALL_CLOCK_TESTS" "$work/names" || true; } > "$work/pool"
+  # The wall-clock test cases after the pool, one at a time. The pool starts with the test
+  # cases that take 20-60 s under TSan (TSAN_SLOW), so that none of them is the pool's tail.
+  { grep -Ev "$WALL_CLOCK_TESTS" "$work/names" | grep -E "$TSAN_SLOW" || true; } > "$work/pool"
+  { grep -Ev "$WALL_CLOCK_TESTS" "$work/names" | grep -Ev "$TSAN_SLOW" || true; } >> "$work/pool"
   { grep -E "$WALL_CLOCK_TESTS" "$work/names" || true; } > "$work/alone"
   echo "sanitizers: tsan: $(wc -l < "$work/pool") in the pool, $(wc -l < "$work/alone") alone"
   if ! xargs -P "${CI_JOBS:-$(nproc)}" -d '\n' -n 1 "$root/tests/ci/tsan_one.sh" "$work" "$program" \
