@@ -75,6 +75,9 @@ HEAVY_BYTE_CHECKS+="|^every SIMD path reproduces the bytes of the integrator bef
 HEAVY_BYTE_CHECKS+="|^fput: a = b = 0 through the Anharmonic policy gives the harmonic chain's bytes\$"
 # And one figure check whose code the goldens and the figures command run under ASan as well.
 HEAVY_BYTE_CHECKS+="|^Figures: the light theme's border is its background, all around\$"
+HEAVY_BYTE_CHECKS+="|^Figures match their goldens within tolerance\$"
+HEAVY_BYTE_CHECKS+="|^Breaking map figure: exact and RK4 agree away from the switches, both gammas\$"
+HEAVY_BYTE_CHECKS+="|^every SIMD path the CPU supports gives the same bytes as SSE2\$"
 
 asan() {
   stamp "asan: build"
@@ -96,8 +99,11 @@ asan() {
   # frozen hashes of every path (104 s; the paths run in "every SIMD path the CPU supports gives
   # the same bytes as SSE2" and the small-chain case, both kept) and fput's a = b = 0 bytes
   # (92 s; the Anharmonic kernels run in "fput: every kernel path and SIMD path ..."). And the
-  # light theme's border (81 s: every figure drawn again in the light theme, by the code that
-  # "Figures match their goldens" and the figures command run under ASan).
+  # light theme's border (81 s: every figure drawn again in the light theme), the goldens (71 s)
+  # and the breaking map figure's two solvers (85 s): the figures command draws every figure in
+  # every format under ASan with the same code. And every path against SSE2 (85 s at N up to
+  # 10^4; the paths run under ASan in the small-chain case, at the edge sizes 1-3 and 511-513).
+  # CI's whole run was 3720 s on a 2.5 GHz Cascade Lake with these four in, over 60 minutes.
   # Two passes: the tests that time a signal or the wall clock (WALL_CLOCK_TESTS) alone, one
   # at a time; the rest two at a time, one per core (the suite is ~18 CPU minutes under ASan).
   ctest --test-dir build-asan --output-on-failure --timeout 1500 -j "${CI_JOBS:-$(nproc)}" \
