@@ -103,7 +103,7 @@ asan() {
   # and the breaking map figure's two solvers (85 s): the figures command draws every figure in
   # every format under ASan with the same code. And every path against SSE2 (85 s at N up to
   # 10^4; the paths run under ASan in the small-chain case, at the edge sizes 1-3 and 511-513).
-  # CI's whole run was 3720 s on a 2.5 GHz Cascade Lake with these four in, over 60 minutes.
+  # CI's whole run took 3698 s on a 2.5 GHz Cascade Lake with these four in: over 60 minutes.
   # Two passes: the tests that time a signal or the wall clock (WALL_CLOCK_TESTS) alone, one
   # at a time; the rest two at a time, one per core (the suite is ~18 CPU minutes under ASan).
   ctest --test-dir build-asan --output-on-failure --timeout 1500 -j "${CI_JOBS:-$(nproc)}" \
