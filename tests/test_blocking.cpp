@@ -217,6 +217,13 @@ TEST_CASE("blocking is on by default only for long chains, and 0 or 1 turns it o
 namespace {
 cb::detail::Rk4Window window_under_test = nullptr;
 int window_calls = 0;
+// The same for the segments kernel (rk4_segments.h).
+cb::detail::Rk4Segments segments_under_test = nullptr;
+int segments_calls = 0;
+void counting_segments(const cb::detail::SegmentStep& in, cb::detail::SegmentBooks& out) {
+  ++segments_calls;
+  segments_under_test(in, out);
+}
 void counting_window(const cb::detail::StepInput& in, int first, int last, int own_first,
                      int own_last, cb::detail::StepOutput& out) {
   ++window_calls;
@@ -263,14 +270,21 @@ TEST_CASE("a block's states and per-step sums equal the one-step kernel's on a m
         }
         for (cb::SimdPath path : {cb::SimdPath::Sse2, cb::SimdPath::Avx2, cb::SimdPath::Avx512}) {
           if (!cb::simd_supported(path)) continue;
-          for (bool use_window : {false, true}) {
+          // 0: the tiled kernel; 1: the window kernel; 2, 3: with the segments kernel, its
+          // lanes 512 and 1024 beads long (the Integrator's are longer: the runs above use them).
+          for (int use : {0, 1, 2, 3}) {
+            const bool use_window = use > 0;
             // The reference below is always the tiled kernel, one step at a time.
             window_under_test = cb::detail::rk4_window_kernel(path);
             if (use_window && !window_under_test) continue;  // SSE2: tiled only
             const cb::detail::Rk4Window window = use_window ? counting_window : nullptr;
-            window_calls = 0;
+            cb::detail::SegmentsKernel segments = cb::detail::rk4_segments_kernel(path);
+            segments_under_test = segments.step;
+            segments.step = use >= 2 ? counting_segments : nullptr;
+            segments.segment = use == 2 ? 512 : 1024;
+            window_calls = segments_calls = 0;
             INFO(cb::simd_name(path) << ", " << count << " steps, " << kBeads << " beads, "
-                                     << broken.size() << " broken, window kernel " << use_window);
+                                     << broken.size() << " broken, kernels " << use);
             const cb::detail::Rk4Beads kernel = cb::detail::rk4_kernel(path);
             cb::detail::StepInput in;
             in.beads = kBeads;
@@ -309,14 +323,18 @@ TEST_CASE("a block's states and per-step sums equal the one-step kernel's on a m
             cb::detail::BlockScratch blocks[2];
             std::atomic<bool> abort{false};
             for (int w = 0; w < 2; ++w)
-              REQUIRE(cb::detail::rk4_blocked(kernel, window, in, steps, ranges[w].first,
+              REQUIRE(cb::detail::rk4_blocked(kernel, window, segments, in, steps, ranges[w].first,
                                               ranges[w].second, scratch, blocks[w], abort) == -1);
             CHECK(same_doubles(bx, x));
             CHECK(same_doubles(bv, v));
             // Not vacuous (with the ten broken springs every block of the shorter chain is near
             // one).
             if (use_window && broken.size() < 10)
-              CHECK(window_calls >= (broken.empty() ? 5 * count : 1));
+              CHECK(window_calls >= (broken.empty() && use == 1 ? 5 * count : 1));
+            // Not vacuous: the segments kernel ran (each step of a group is one call); on
+            // AVX-512 eight 1024-bead lanes fit only the longer chain.
+            if (broken.size() < 10 && (use == 2 || (use == 3 && kBeads == 20000)))
+              CHECK(segments_calls >= count);
             for (int k = 0; k < count; ++k)
               for (int w = 0; w < 2; ++w)
                 for (int s = 0; s < 4; ++s) {
@@ -354,8 +372,9 @@ TEST_CASE("a block's states and per-step sums equal the one-step kernel's on a m
             in.psi_out = bx.data();
             in.vel_out = bv.data();
             abort = false;
-            const int failed = cb::detail::rk4_blocked(kernel, window, in, steps, ranges[0].first,
-                                                       ranges[0].second, scratch, blocks[0], abort);
+            const int failed =
+                cb::detail::rk4_blocked(kernel, window, segments, in, steps, ranges[0].first,
+                                        ranges[0].second, scratch, blocks[0], abort);
             REQUIRE(failed >= 0);
             REQUIRE(failed < count);
             CHECK(crossing[failed]);
@@ -366,7 +385,7 @@ TEST_CASE("a block's states and per-step sums equal the one-step kernel's on a m
             bad[ranges[1].first + 700] = std::numeric_limits<double>::infinity();
             in.psi = bad.data();
             abort = false;
-            CHECK(cb::detail::rk4_blocked(kernel, window, in, steps, ranges[1].first,
+            CHECK(cb::detail::rk4_blocked(kernel, window, segments, in, steps, ranges[1].first,
                                           ranges[1].second, scratch, blocks[1], abort) == 0);
           }
         }

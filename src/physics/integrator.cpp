@@ -111,6 +111,7 @@ struct Integrator::Impl {
   detail::Rk4Beads kernel;
   detail::Rk4Chain chain_kernel = nullptr;    // null: always tiled
   detail::Rk4Window window_kernel = nullptr;  // a temporal block's steps; null: tiled
+  detail::SegmentsKernel segments_kernel;     // and its Uniform chain's segments (rk4_segments.h)
   // Temporal blocking: steps per block (1: off), each worker's buffers and answer, the
   // steps of the block being tried, and the first step a block may start at again after
   // one failed (its steps up to the failure go one at a time).
@@ -130,7 +131,10 @@ struct Integrator::Impl {
         block_steps(std::max(1, block)) {
     if (!tiled_only && pool.size() == 1 && beads <= kChainBeads)
       chain_kernel = detail::rk4_chain_kernel(path);
-    if (!tiled_only) window_kernel = detail::rk4_window_kernel(path);
+    if (!tiled_only) {
+      window_kernel = detail::rk4_window_kernel(path);
+      segments_kernel = detail::rk4_segments_kernel(path);
+    }
     const int workers = pool.size();
     scratch.resize(workers);
     outputs.resize(workers);
@@ -483,9 +487,9 @@ int Integrator::step_block(int count) {
   detail::StepInput in = chain_input(state_, params_, coef_, im.psi_next, im.vel_next);
   std::atomic<bool> abort{false};
   im.pool.run([&](int w) {
-    im.block_result[w] =
-        detail::rk4_blocked(im.kernel, im.window_kernel, in, im.plain, im.ranges[w].first,
-                            im.ranges[w].second, im.scratch[w], im.blocks[w], abort);
+    im.block_result[w] = detail::rk4_blocked(im.kernel, im.window_kernel, im.segments_kernel, in,
+                                             im.plain, im.ranges[w].first, im.ranges[w].second,
+                                             im.scratch[w], im.blocks[w], abort);
   });
   int failed = count;
   for (int r : im.block_result)

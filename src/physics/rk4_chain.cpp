@@ -1,5 +1,7 @@
 #include "physics/rk4_chain.h"
 
+#include "physics/rk4_segments.h"
+
 namespace cb::detail {
 
 Rk4Chain rk4_chain_kernel(SimdPath path) {
@@ -38,6 +40,20 @@ Rk4Window rk4_window_kernel(SimdPath path) {
       break;
   }
   return nullptr;
+}
+
+SegmentsKernel rk4_segments_kernel(SimdPath path) {
+  constexpr int kSegmentsBeads = 32 * kTile;  // all lanes' (rk4_segments.h)
+  switch (path) {
+    case SimdPath::Avx512:
+      return {avx512::rk4_segments, 8, kSegmentsBeads / 8, avx512::interleave,
+              avx512::deinterleave};
+    case SimdPath::Avx2:
+      return {avx2::rk4_segments, 4, kSegmentsBeads / 4, avx2::interleave, avx2::deinterleave};
+    case SimdPath::Sse2:
+      break;
+  }
+  return {};
 }
 
 }  // namespace cb::detail

@@ -15,7 +15,9 @@
 namespace cb::detail::avx2 {
 constexpr int kVec = 4;  // doubles a register
 #include "physics/stencil.inc"
-// The kernel, written on the stencil above.
+// What the wavefront kernels share.
+#include "physics/wavefront.inc"
+// The kernels, written on the stencil above.
 #include "physics/rk4_chain_kernel.inc"
 #include "physics/rk4_window_kernel.inc"
 }  // namespace cb::detail::avx2

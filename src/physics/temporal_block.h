@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "physics/rk4_chain.h"
+#include "physics/rk4_segments.h"
 #include "physics/rk4_tile.h"
 
 namespace cb::detail {
@@ -36,8 +37,10 @@ struct PlainStep {
 
 // One worker's buffers for blocked steps.
 struct BlockScratch {
-  std::vector<double> psi[2], vel[2];  // the block's window, one step after another
-  StepOutput tile, halo;               // one kernel call's output
+  std::vector<double> psi[2], vel[2];              // the block's window, one step after another
+  StepOutput tile, halo;                           // one kernel call's output
+  std::vector<double> lanes_psi[2], lanes_vel[2];  // segments' windows, interleaved
+  SegmentBooks lanes_books;                        // one segments step's books
   // Per step of the block: this worker's sums in the one-step path's order (candidates
   // stay empty: a step with a crossing fails the block).
   std::vector<StepOutput> steps;
@@ -48,8 +51,11 @@ struct BlockScratch {
 // step's are in `steps`). Returns -1, or the index of a step found not plain (then the
 // output is to be thrown away); a set `abort` stops between blocks, and a failure sets it.
 // `window` (may be null) does each step of a block where no broken spring is near, with the
-// same bits as `kernel`'s tiles (rk4_window_kernel.inc); `kernel` does the others.
-int rk4_blocked(Rk4Beads kernel, Rk4Window window, const StepInput& in,
+// same bits as `kernel`'s tiles (rk4_window_kernel.inc); `kernel` does the others. Where
+// `window` runs, `segments` (its step may be null) takes the Uniform chain's stretches of
+// segments.lanes * segments.segment beads whose windows lie inside the chain, with the window
+// kernel's bits (rk4_segments.h), segments.segment beads a lane.
+int rk4_blocked(Rk4Beads kernel, Rk4Window window, SegmentsKernel segments, const StepInput& in,
                 const std::vector<PlainStep>& steps, int first, int last, TileScratch& scratch,
                 BlockScratch& bs, std::atomic<bool>& abort);
 

@@ -1,12 +1,14 @@
 // The page has no x86 kernels (rk4_*_avx2.cpp, *_avx512.cpp, lanes_*.cpp, crossing_*.cpp: x86
 // intrinsics and target pragmas), but the dispatch files that name them (rk4_tile.cpp,
-// rk4_chain.cpp, lanes.cpp, crossing.cpp) are the program's own. On WebAssembly simd_supported() is
-// true for the portable path only (physics/simd.cpp), so active_simd() is SimdPath::Sse2 and these
-// are never called: the page runs the generic kernel, the one whose bits every x86 path reproduces.
-// They trap if that ever changes rather than compute anything.
+// rk4_chain.cpp (with rk4_segments.h), lanes.cpp, crossing.cpp) are the program's own. On
+// WebAssembly simd_supported() is true for the portable path only (physics/simd.cpp), so
+// active_simd() is SimdPath::Sse2 and these are never called: the page runs the generic kernel, the
+// one whose bits every x86 path reproduces. They trap if that ever changes rather than compute
+// anything.
 #include "physics/crossing.h"
 #include "physics/lanes_interval.h"
 #include "physics/rk4_chain.h"
+#include "physics/rk4_segments.h"
 #include "physics/rk4_tile.h"
 
 namespace cb::detail {
@@ -24,6 +26,15 @@ Rk4Chain rk4_chain_for(const StepInput&) {
   CB_NOT_IN_THE_PAGE;
 }
 void rk4_window(const StepInput&, int, int, int, int, StepOutput&) {
+  CB_NOT_IN_THE_PAGE;
+}
+void rk4_segments(const SegmentStep&, SegmentBooks&) {
+  CB_NOT_IN_THE_PAGE;
+}
+void interleave(const double*, std::ptrdiff_t, int, double*) {
+  CB_NOT_IN_THE_PAGE;
+}
+void deinterleave(const double*, int, double*, std::ptrdiff_t) {
   CB_NOT_IN_THE_PAGE;
 }
 void lanes_interval(const LaneInterval&) {
@@ -45,6 +56,15 @@ Rk4Chain rk4_chain_for(const StepInput&) {
   CB_NOT_IN_THE_PAGE;
 }
 void rk4_window(const StepInput&, int, int, int, int, StepOutput&) {
+  CB_NOT_IN_THE_PAGE;
+}
+void rk4_segments(const SegmentStep&, SegmentBooks&) {
+  CB_NOT_IN_THE_PAGE;
+}
+void interleave(const double*, std::ptrdiff_t, int, double*) {
+  CB_NOT_IN_THE_PAGE;
+}
+void deinterleave(const double*, int, double*, std::ptrdiff_t) {
   CB_NOT_IN_THE_PAGE;
 }
 void lanes_interval(const LaneInterval&) {

@@ -1,0 +1,24 @@
+// The segments RK4 kernel (rk4_segments_kernel.inc) compiled for AVX2 (4 doubles a vector).
+#include <immintrin.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "physics/crossing.h"
+#include "physics/rk4_segments.h"
+#include "physics/target_avx2_begin.inc"
+
+namespace cb::detail::avx2 {
+constexpr int kVec = 4;  // doubles a register
+#include "physics/stencil.inc"
+// What the wavefront kernels share.
+#include "physics/wavefront.inc"
+// The kernel.
+#include "physics/rk4_segments_kernel.inc"
+}  // namespace cb::detail::avx2
+
+#include "physics/target_end.inc"
