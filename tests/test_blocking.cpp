@@ -2,8 +2,11 @@
 // the same run stepped one step at a time -- psi, vel, broken springs, break times, energy
 // books -- on every SIMD path the CPU has, with 1 and 2 threads, with friction, a ramp that
 // stops, kicks, breaking inside what would be a block, and the pull string.
+#include <algorithm>
+#include <array>
 #include <atomic>
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <cstring>
 #include <limits>
 
@@ -262,7 +265,12 @@ TEST_CASE("a block's states and per-step sums equal the one-step kernel's on a m
         psi[i] = uniform();
         vel[i] = uniform();
       }
-      for (int count : {2, 3, 8}) {
+      // Unequal beads and springs (the PerBead policy: every array read where it belongs) on the
+      // longer chain with none or one spring broken.
+      for (int variant = 0; variant < 6; ++variant) {
+        const int count = std::array{2, 3, 8}[variant % 3];
+        const bool unequal = variant >= 3;
+        if (unequal && (kBeads != 20000 || broken.size() >= 10)) continue;
         std::vector<cb::detail::PlainStep> steps(count);
         for (int k = 0; k < count; ++k) {
           steps[k].h = 0.05;
@@ -283,8 +291,9 @@ TEST_CASE("a block's states and per-step sums equal the one-step kernel's on a m
             segments.step = use >= 2 ? counting_segments : nullptr;
             segments.segment = use == 2 ? 512 : 1024;
             window_calls = segments_calls = 0;
-            INFO(cb::simd_name(path) << ", " << count << " steps, " << kBeads << " beads, "
-                                     << broken.size() << " broken, kernels " << use);
+            INFO(cb::simd_name(path)
+                 << ", " << count << " steps, " << kBeads << " beads, "
+                 << (unequal ? "unequal, " : "") << broken.size() << " broken, kernels " << use);
             const cb::detail::Rk4Beads kernel = cb::detail::rk4_kernel(path);
             cb::detail::StepInput in;
             in.beads = kBeads;
@@ -292,7 +301,16 @@ TEST_CASE("a block's states and per-step sums equal the one-step kernel's on a m
             in.broken = &broken;
             cb::ChainParams unbreakable;
             unbreakable.beads = kBeads;
+            if (unequal) {
+              unbreakable.mass.resize(kBeads);
+              unbreakable.stiffness.resize(kBeads);
+              for (int j = 1; j <= kBeads; ++j) {
+                unbreakable.mass[j - 1] = 1.0 + 0.5 * std::sin(0.37 * j);
+                unbreakable.stiffness[j - 1] = 1.0 + 0.4 * std::cos(0.11 * j);
+              }
+            }
             cb::ChainCoefficients coef = cb::chain_coefficients(unbreakable);
+            REQUIRE(coef.per_bead == unequal);
             in.coef = &coef;
             // One step at a time, the reference: each worker's StepOutput per step.
             std::vector<double> x = psi, v = vel, xn(kBeads), vn(kBeads);
@@ -349,6 +367,10 @@ TEST_CASE("a block's states and per-step sums equal the one-step kernel's on a m
             // block names a step in which the one-step path finds a crossing in worker 0's range
             // (the Hermite test of Integrator::advance_interval on the kernel's candidates).
             coef.threshold = 0.62;
+            if (unequal) {
+              std::fill(coef.upper.begin(), coef.upper.end(), 0.62);
+              std::fill(coef.lower.begin(), coef.lower.end(), -0.62);
+            }
             coef.checks = true;
             std::vector<bool> crossing(count, false);
             x = psi;

@@ -13,9 +13,10 @@
 // that bead (the same operations in the same order, StageForce<P, Interleaved>), and the
 // friction books keep their order: each tile's sum is made lane by lane from four partial
 // sums, bead l of the tile into s_{l % 4} (wavefront.inc's Squares), and handed back per tile
-// for the caller to add in chain order. Only the Uniform chain, harmonic or anharmonic, and
-// only windows that touch neither the wall's halo nor bead N's (no general stencil, no
-// coefficient arrays): temporal_block.cpp keeps the window kernel for everything else.
+// for the caller to add in chain order. Every policy the window kernel takes (Uniform and
+// PerBead, harmonic or anharmonic; the PerBead arrays interleaved by the caller once a pass),
+// and only windows that touch neither the wall's halo nor bead N's (no general stencil):
+// temporal_block.cpp keeps the window kernel for those.
 #pragma once
 
 #include <cstddef>
@@ -43,14 +44,19 @@ struct SegmentStep {
   double h = 0.0;
   double gamma = 0.0;
   const ChainCoefficients* coef = nullptr;
-  // Memory the caller will touch after the step (the next segments' old state, this one's new
-  // state in the chain's arrays): fetched into cache a line at a time between the step's
+  // The PerBead policy's arrays (coef->per_bead), interleaved as x is: 1/m_j, K_j (one vector
+  // more, for vector read_hi - 1's right spring), m_j and the bounds; null for the Uniform one.
+  const double *inv_mass = nullptr, *stiffness = nullptr, *mass = nullptr;
+  const double *upper = nullptr, *lower = nullptr;
+  // Memory the caller will touch after the step (the next segments' old state and arrays, this
+  // one's new state in the chain's arrays): fetched into cache a line at a time between the step's
   // vectors, so that the copies in and out do not wait on the bus while the core idles.
   struct Ahead {
     const double* first = nullptr;
     int lines = 0;  // of 64 bytes
   };
-  Ahead ahead[4];
+  static constexpr int kAhead = 8;
+  Ahead ahead[kAhead];
 };
 
 // What a step of segments gives back: per stage, 2 gamma times each owned tile's friction sum,

@@ -126,18 +126,42 @@ int segment_steps(SegmentsKernel segments, const StepInput& in, const std::vecto
   s.coef = in.coef;
   s.own_lo = reach;
   s.own_hi = reach + seg;
-  // What the caller touches next, in cache lines: the next stretch's old state (`next` beads
-  // from a + lanes seg - reach) and this one's new state; a count-th of each a step.
+  // The PerBead arrays (1/m, K with one more for the last vector's right spring, m, the bounds
+  // when springs are checked), interleaved once for every step.
+  const ChainCoefficients& coef = *in.coef;
+  const double* arrays[5] = {};
+  if (coef.per_bead) {
+    const double* chain[5] = {coef.inv_mass.data(), coef.stiffness.data(), coef.mass.data(),
+                              coef.upper.data(), coef.lower.data()};
+    for (int i = 0; i < (coef.checks ? 5 : 3); ++i) {
+      const int extra = i == 1 ? 1 : 0;
+      double* to = aligned_room(bs.lanes_coef[i], size + extra * lanes);
+      segments.interleave(chain[i] + (a - reach), seg, len + extra, to);
+      arrays[i] = to;
+    }
+  }
+  s.inv_mass = arrays[0], s.stiffness = arrays[1], s.mass = arrays[2];
+  s.upper = arrays[3], s.lower = arrays[4];
+  // What the caller touches next, in cache lines: the next stretch's old state and arrays
+  // (`next` beads from a + lanes seg - reach) and this one's new state; a count-th of each a
+  // step.
   const auto lines = [](int beads) { return (beads * 8 + 63) / 64; };
-  const SegmentStep::Ahead touch[4] = {{in.psi + (a + lanes * seg - reach - in.base), lines(next)},
-                                       {in.vel + (a + lanes * seg - reach - in.base), lines(next)},
-                                       {in.psi_out + (a - in.out_base), lines(lanes * seg)},
-                                       {in.vel_out + (a - in.out_base), lines(lanes * seg)}};
+  const int from = a + lanes * seg - reach;
+  const int more = coef.per_bead ? next : 0;
+  const SegmentStep::Ahead touch[SegmentStep::kAhead] = {
+      {in.psi + (from - in.base), lines(next)},
+      {in.vel + (from - in.base), lines(next)},
+      {in.psi_out + (a - in.out_base), lines(lanes * seg)},
+      {in.vel_out + (a - in.out_base), lines(lanes * seg)},
+      {coef.per_bead ? coef.inv_mass.data() + from : nullptr, lines(more)},
+      {coef.per_bead ? coef.stiffness.data() + from : nullptr, lines(more)},
+      {coef.per_bead ? coef.mass.data() + from : nullptr, lines(more)},
+      {}};
   for (int k = 0; k < count; ++k) {
-    for (int i = 0; i < 4; ++i) {
+    for (int i = 0; i < SegmentStep::kAhead; ++i) {
       const int share = (touch[i].lines + count - 1) / count;
-      const int from = std::min(touch[i].lines, k * share);
-      s.ahead[i] = {touch[i].first + from * 8, std::min(touch[i].lines, from + share) - from};
+      const int first = std::min(touch[i].lines, k * share);
+      s.ahead[i] = {touch[i].first + first * 8, std::min(touch[i].lines, first + share) - first};
     }
     s.h = s_in.h = steps[k].h;
     const int r = kHalo * (count - 1 - k);  // what later steps still read past the segment
@@ -151,7 +175,7 @@ int segment_steps(SegmentsKernel segments, const StepInput& in, const std::vecto
     s.v_out = v[(k + 1) % 2];
     segments.step(s, bs.lanes_books);
     StepOutput& sum = bs.steps[k];
-    sum.finite = bs.lanes_books.finite;
+    sum.finite = sum.finite && bs.lanes_books.finite;
     std::swap(sum.candidates, bs.lanes_books.candidates);
     if (!tile_is_plain(s_in, sum)) return k;
     sum.candidates.clear();
@@ -178,13 +202,14 @@ int rk4_blocked(Rk4Beads kernel, Rk4Window window, SegmentsKernel segments, cons
   const int reach = kHalo * count;
   bs.steps.resize(count);
   for (StepOutput& o : bs.steps) o.reset();
-  // Segments: where the Uniform chain's window kernel would run on every lane's window.
-  const bool uniform = !in.coef->per_bead && in.coef->weight == 0.0;
+  // Segments: where the window kernel would run on every lane's window (not the weighted chain,
+  // which takes the tiled kernel everywhere).
+  const bool plain_policy = in.coef->weight == 0.0;
   const int seg = segments.segment, group = segments.lanes * seg;
   for (int a = first; a < last;) {
     if (abort.load(std::memory_order_relaxed)) return count;
     int failed;
-    if (window && segments.step && uniform && a + group <= last && a - reach >= 0 &&
+    if (window && segments.step && plain_policy && a + group <= last && a - reach >= 0 &&
         a + group + reach <= n && window_is_intact(*in.broken, a - reach, a + group + reach)) {
       // The next stretch's window, as far as it lies in the chain (for the prefetches).
       const int next = std::max(0, std::min(group + 2 * reach, n - (a + group - reach)));

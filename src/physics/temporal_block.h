@@ -40,6 +40,7 @@ struct BlockScratch {
   std::vector<double> psi[2], vel[2];              // the block's window, one step after another
   StepOutput tile, halo;                           // one kernel call's output
   std::vector<double> lanes_psi[2], lanes_vel[2];  // segments' windows, interleaved
+  std::vector<double> lanes_coef[5];               // and their PerBead arrays
   SegmentBooks lanes_books;                        // one segments step's books
   // Per step of the block: this worker's sums in the one-step path's order (candidates
   // stay empty: a step with a crossing fails the block).

@@ -13,67 +13,40 @@
 
 namespace cb::detail {
 
-#define CB_NOT_IN_THE_PAGE __builtin_trap()
+// Every kernel an instruction set's files define, once for both namespaces.
+#define CB_NOT_IN_THE_PAGE(isa)                                           \
+  namespace isa {                                                         \
+  void rk4_beads(const StepInput&, int, int, TileScratch&, StepOutput&) { \
+    __builtin_trap();                                                     \
+  }                                                                       \
+  void rk4_chain(const StepInput&, StepOutput&) {                         \
+    __builtin_trap();                                                     \
+  }                                                                       \
+  Rk4Chain rk4_chain_for(const StepInput&) {                              \
+    __builtin_trap();                                                     \
+  }                                                                       \
+  void rk4_window(const StepInput&, int, int, int, int, StepOutput&) {    \
+    __builtin_trap();                                                     \
+  }                                                                       \
+  void rk4_segments(const SegmentStep&, SegmentBooks&) {                  \
+    __builtin_trap();                                                     \
+  }                                                                       \
+  void interleave(const double*, std::ptrdiff_t, int, double*) {          \
+    __builtin_trap();                                                     \
+  }                                                                       \
+  void deinterleave(const double*, int, double*, std::ptrdiff_t) {        \
+    __builtin_trap();                                                     \
+  }                                                                       \
+  void lanes_interval(const LaneInterval&) {                              \
+    __builtin_trap();                                                     \
+  }                                                                       \
+  void finish_hermite_roots(HermiteRoot*, std::size_t) {                  \
+    __builtin_trap();                                                     \
+  }                                                                       \
+  }
 
-namespace avx2 {
-void rk4_beads(const StepInput&, int, int, TileScratch&, StepOutput&) {
-  CB_NOT_IN_THE_PAGE;
-}
-void rk4_chain(const StepInput&, StepOutput&) {
-  CB_NOT_IN_THE_PAGE;
-}
-Rk4Chain rk4_chain_for(const StepInput&) {
-  CB_NOT_IN_THE_PAGE;
-}
-void rk4_window(const StepInput&, int, int, int, int, StepOutput&) {
-  CB_NOT_IN_THE_PAGE;
-}
-void rk4_segments(const SegmentStep&, SegmentBooks&) {
-  CB_NOT_IN_THE_PAGE;
-}
-void interleave(const double*, std::ptrdiff_t, int, double*) {
-  CB_NOT_IN_THE_PAGE;
-}
-void deinterleave(const double*, int, double*, std::ptrdiff_t) {
-  CB_NOT_IN_THE_PAGE;
-}
-void lanes_interval(const LaneInterval&) {
-  CB_NOT_IN_THE_PAGE;
-}
-void finish_hermite_roots(HermiteRoot*, std::size_t) {
-  CB_NOT_IN_THE_PAGE;
-}
-}  // namespace avx2
-
-namespace avx512 {
-void rk4_beads(const StepInput&, int, int, TileScratch&, StepOutput&) {
-  CB_NOT_IN_THE_PAGE;
-}
-void rk4_chain(const StepInput&, StepOutput&) {
-  CB_NOT_IN_THE_PAGE;
-}
-Rk4Chain rk4_chain_for(const StepInput&) {
-  CB_NOT_IN_THE_PAGE;
-}
-void rk4_window(const StepInput&, int, int, int, int, StepOutput&) {
-  CB_NOT_IN_THE_PAGE;
-}
-void rk4_segments(const SegmentStep&, SegmentBooks&) {
-  CB_NOT_IN_THE_PAGE;
-}
-void interleave(const double*, std::ptrdiff_t, int, double*) {
-  CB_NOT_IN_THE_PAGE;
-}
-void deinterleave(const double*, int, double*, std::ptrdiff_t) {
-  CB_NOT_IN_THE_PAGE;
-}
-void lanes_interval(const LaneInterval&) {
-  CB_NOT_IN_THE_PAGE;
-}
-void finish_hermite_roots(HermiteRoot*, std::size_t) {
-  CB_NOT_IN_THE_PAGE;
-}
-}  // namespace avx512
+CB_NOT_IN_THE_PAGE(avx2)
+CB_NOT_IN_THE_PAGE(avx512)
 
 #undef CB_NOT_IN_THE_PAGE
 
