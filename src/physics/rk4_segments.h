@@ -62,27 +62,30 @@ struct SegmentStep {
 // What a step of segments gives back: per stage, 2 gamma times each owned tile's friction sum,
 // lane after lane and tile after tile in each (chain order when the lanes are consecutive
 // stretches), to be added to the stage's rate one after another as add_friction adds them; the
-// finite test and the spring candidates (Candidate::spring counts from 1) of the owned beads.
+// spring candidates (Candidate::spring counts from 1) of the owned beads. No finite test: a
+// value that is not finite stays so at its bead in every later step (x + h/6 (...) and
+// v + h/6 (...) keep an inf or a NaN), and the owned beads are the same in every step, so the
+// caller tests the last step's owned values only, as it copies them out (deinterleave).
 struct SegmentBooks {
   std::vector<double> tile_rates[4];
-  bool finite = true;
   std::vector<Candidate> candidates;
 };
 
 using Rk4Segments = void (*)(const SegmentStep& in, SegmentBooks& out);
 // The layout's two copies, lanes = kVec stretches of len doubles (stretch k at src + k stride):
-// interleave writes dst[i * lanes + k] = src[k * stride + i]; deinterleave the reverse.
+// interleave writes dst[i * lanes + k] = src[k * stride + i]; deinterleave the reverse, and
+// says whether every value it copied is finite.
 using Interleave = void (*)(const double* src, std::ptrdiff_t stride, int len, double* dst);
-using Deinterleave = void (*)(const double* src, int len, double* dst, std::ptrdiff_t stride);
+using Deinterleave = bool (*)(const double* src, int len, double* dst, std::ptrdiff_t stride);
 namespace avx2 {
 void rk4_segments(const SegmentStep& in, SegmentBooks& out);
 void interleave(const double* src, std::ptrdiff_t stride, int len, double* dst);
-void deinterleave(const double* src, int len, double* dst, std::ptrdiff_t stride);
+bool deinterleave(const double* src, int len, double* dst, std::ptrdiff_t stride);
 }  // namespace avx2
 namespace avx512 {
 void rk4_segments(const SegmentStep& in, SegmentBooks& out);
 void interleave(const double* src, std::ptrdiff_t stride, int len, double* dst);
-void deinterleave(const double* src, int len, double* dst, std::ptrdiff_t stride);
+bool deinterleave(const double* src, int len, double* dst, std::ptrdiff_t stride);
 }  // namespace avx512
 // The kernel for the path, its lanes (doubles a vector) and copies, or null (SSE2); segment:
 // the beads of one lane (a multiple of kTile), chosen so that the lanes together are 32 tiles,

@@ -175,7 +175,6 @@ int segment_steps(SegmentsKernel segments, const StepInput& in, const std::vecto
     s.v_out = v[(k + 1) % 2];
     segments.step(s, bs.lanes_books);
     StepOutput& sum = bs.steps[k];
-    sum.finite = sum.finite && bs.lanes_books.finite;
     std::swap(sum.candidates, bs.lanes_books.candidates);
     if (!tile_is_plain(s_in, sum)) return k;
     sum.candidates.clear();
@@ -184,11 +183,14 @@ int segment_steps(SegmentsKernel segments, const StepInput& in, const std::vecto
       for (int st = 0; st < 4; ++st)
         for (double rate : bs.lanes_books.tile_rates[st]) sum.dissipation_rate[st] += rate;
   }
+  // The finite test of every step, on the last one (SegmentBooks says why).
   const double* xn = x[count % 2];
   const double* vn = v[count % 2];
-  segments.deinterleave(xn + reach * lanes, seg, in.psi_out + (a - in.out_base), seg);
-  segments.deinterleave(vn + reach * lanes, seg, in.vel_out + (a - in.out_base), seg);
-  return -1;
+  const bool x_finite =
+      segments.deinterleave(xn + reach * lanes, seg, in.psi_out + (a - in.out_base), seg);
+  const bool v_finite =
+      segments.deinterleave(vn + reach * lanes, seg, in.vel_out + (a - in.out_base), seg);
+  return x_finite && v_finite ? -1 : count - 1;
 }
 
 }  // namespace

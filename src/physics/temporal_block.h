@@ -11,7 +11,9 @@
 // into a StepOutput as the one-step path adds them. On AVX2 and AVX-512 a step whose window
 // no broken spring touches runs the wavefront kernel instead (rk4_window, rk4_chain.h), one
 // call for the halo and the block, about 2-5 x the tiled kernel's speed in cache, with the
-// same values and sums in the same order. A block is kept only if every step is
+// same values and sums in the same order; inside the chain, rk4_segments (rk4_segments.h)
+// takes several blocks' worth at once as stretches side by side in SIMD lanes, again with the
+// same values and sums. A block is kept only if every step is
 // plain: the caller gives only steps with no kick, split or pull-string crossing, and a
 // step with a spring crossing (the Hermite test the one-step path applies to its
 // candidates) or a value that is not finite fails the whole pass, which wrote only to the

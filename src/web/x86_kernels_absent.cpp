@@ -34,7 +34,7 @@ namespace cb::detail {
   void interleave(const double*, std::ptrdiff_t, int, double*) {          \
     __builtin_trap();                                                     \
   }                                                                       \
-  void deinterleave(const double*, int, double*, std::ptrdiff_t) {        \
+  bool deinterleave(const double*, int, double*, std::ptrdiff_t) {        \
     __builtin_trap();                                                     \
   }                                                                       \
   void lanes_interval(const LaneInterval&) {                              \
