@@ -18,8 +18,9 @@ namespace {
 // gives what its stack holds: a sign at the very end ("1,-" is -1, "1,2,-" is 0, "1,t*-" is
 // -t), a '?' right after a comma ("1,?2:3" is 0), or a sign with no operand of its own right
 // before a '?' ("1,t*- ?3:4" is -t, "1,t-(- ?3:4)" is 3; found by this harness in CI, session
-// 14; without a comma muParser refuses it). Its defect; the evaluator refuses all three, the one
-// place where they part on purpose.
+// 14; without a comma muParser refuses it) or before a ':' ("t>540,-0-t ?+ :1", found by this
+// harness in session 20's CI run). Its defect; the evaluator refuses all of them, the one place
+// where they part on purpose.
 bool muparser_defect(const std::string& text) {
   const auto blank = [](char c) { return static_cast<unsigned char>(c) <= 32; };
   const auto sign = [](char c) { return c == '-' || c == '+'; };
@@ -37,7 +38,7 @@ bool muparser_defect(const std::string& text) {
     if (text[i] != ',' && !sign(text[i])) continue;
     std::size_t j = i + 1;
     while (j < text.size() && blank(text[j])) ++j;
-    if (j >= text.size() || text[j] != '?') continue;
+    if (j >= text.size() || (text[j] != '?' && text[j] != ':')) continue;
     if (text[i] == ',') return true;
     std::size_t k = i;
     while (k > 0 && blank(text[k - 1])) --k;
