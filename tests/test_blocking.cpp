@@ -289,7 +289,7 @@ TEST_CASE("a block's states and per-step sums equal the one-step kernel's on a m
             cb::detail::SegmentsKernel segments = cb::detail::rk4_segments_kernel(path);
             segments_under_test = segments.step;
             segments.step = use >= 2 ? counting_segments : nullptr;
-            segments.segment = use == 2 ? 512 : 1024;
+            segments.segment = segments.segment_per_bead = use == 2 ? 512 : 1024;
             window_calls = segments_calls = 0;
             INFO(cb::simd_name(path)
                  << ", " << count << " steps, " << kBeads << " beads, "

@@ -46,10 +46,11 @@ SegmentsKernel rk4_segments_kernel(SimdPath path) {
   constexpr int kSegmentsBeads = 32 * kTile;  // all lanes' (rk4_segments.h)
   switch (path) {
     case SimdPath::Avx512:
-      return {avx512::rk4_segments, 8, kSegmentsBeads / 8, avx512::interleave,
+      return {avx512::rk4_segments, 8, kSegmentsBeads / 8, kSegmentsBeads / 16, avx512::interleave,
               avx512::deinterleave};
     case SimdPath::Avx2:
-      return {avx2::rk4_segments, 4, kSegmentsBeads / 4, avx2::interleave, avx2::deinterleave};
+      return {avx2::rk4_segments, 4, kSegmentsBeads / 4, kSegmentsBeads / 8, avx2::interleave,
+              avx2::deinterleave};
     case SimdPath::Sse2:
       break;
   }

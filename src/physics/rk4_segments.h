@@ -90,12 +90,14 @@ bool deinterleave(const double* src, int len, double* dst, std::ptrdiff_t stride
 // The kernel for the path, its lanes (doubles a vector) and copies, or null (SSE2); segment:
 // the beads of one lane (a multiple of kTile), chosen so that the lanes together are 32 tiles,
 // 16384 beads: with 8 steps' halos (40 beads a side) the windows are ~0.54 MB, in L2. Measured
-// at N = 1e7 against segments half and twice as long, alternated in one process
-// (tests/bench/README.md, session 20).
+// at N = 1e7 against lanes of half and twice that length, alternated in one process
+// (tests/bench/README.md, session 20). segment_per_bead: the same for the PerBead policy, half
+// as long, as its three interleaved arrays would take the windows to ~0.95 MB (+2-3 %).
 struct SegmentsKernel {
   Rk4Segments step = nullptr;
   int lanes = 0;
   int segment = 0;
+  int segment_per_bead = 0;
   Interleave interleave = nullptr;
   Deinterleave deinterleave = nullptr;
 };

@@ -207,7 +207,8 @@ int rk4_blocked(Rk4Beads kernel, Rk4Window window, SegmentsKernel segments, cons
   // Segments: where the window kernel would run on every lane's window (not the weighted chain,
   // which takes the tiled kernel everywhere).
   const bool plain_policy = in.coef->weight == 0.0;
-  const int seg = segments.segment, group = segments.lanes * seg;
+  const int seg = in.coef->per_bead ? segments.segment_per_bead : segments.segment;
+  const int group = segments.lanes * seg;
   for (int a = first; a < last;) {
     if (abort.load(std::memory_order_relaxed)) return count;
     int failed;
