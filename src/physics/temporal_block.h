@@ -55,7 +55,7 @@ struct BlockScratch {
 // output is to be thrown away); a set `abort` stops between blocks, and a failure sets it.
 // `window` (may be null) does each step of a block where no broken spring is near, with the
 // same bits as `kernel`'s tiles (rk4_window_kernel.inc); `kernel` does the others. Where
-// `window` runs, `segments` (its step may be null) takes the Uniform chain's stretches of
+// `window` runs, `segments` (its step may be null) takes the chain's stretches of
 // segments.lanes lanes of segments.segment beads (segment_per_bead on the PerBead path) whose
 // windows lie inside the chain, with the window kernel's bits (rk4_segments.h).
 int rk4_blocked(Rk4Beads kernel, Rk4Window window, SegmentsKernel segments, const StepInput& in,
