@@ -19,8 +19,8 @@ FUZZ_SECONDS=${FUZZ_SECONDS:-60}
 # Debug without NDEBUG keeps the asserts (toml++'s included: CHAINBREAK_TOML_HEADER_ONLY
 # compiles it into the project); -O1 keeps the suite's run time bearable. -gline-tables-only:
 # the reports' stack traces need files and lines, not variables; full -g made the one-chain
-# kernel's file compile in 183 s instead of 132 s under ASan (2.5 GHz Cascade Lake; since session
-# 19's kernels it takes ~275 s with -gline-tables-only), and CI builds the project twice here.
+# kernel's file compile in 183 s instead of 132 s under ASan (2.5 GHz Cascade Lake; by session
+# 20 it took 274-281 s with -gline-tables-only), and CI builds the project twice here.
 configure() {  # folder, sanitizer flags, extra cmake arguments...
   local dir=$1 flags=$2
   shift 2
