@@ -95,7 +95,8 @@ Figure figure_breaking_map(const FigureOptions& o) {
         make_series(std::string("exact N / not-N switch ") + c.name, SeriesStyle::Points,
                     c.gamma == 0.0 ? FigureColour::Accent : c.colour, {}, {});
     if (stopped(o)) return f;
-    for (const MapBoundary& b : spring_n_boundaries(kN, c.gamma, 0.5, kMapZetaMax, 250, 1e-9, o.stop)) {
+    for (const MapBoundary& b :
+         spring_n_boundaries(kN, c.gamma, 0.5, kMapZetaMax, 250, 1e-9, o.stop)) {
       switches.x.push_back(b.zeta);
       switches.y.push_back(row);
       const bool at_right = b.zeta > kMapZetaMax - 15.0;  // keep the label inside the plot
