@@ -10,13 +10,14 @@
 #include "physics/energy.h"
 #include "physics/integrator.h"
 #include "physics/run_loop.h"
+#include "physics/stop_flag.h"
 
 namespace cb {
 
 namespace {
 
 bool stopped(const RunRequest& r) {
-  return r.stop && r.stop->load(std::memory_order_relaxed);
+  return stop_requested(r.stop);
 }
 
 void report(const RunRequest& r, std::int64_t step) {

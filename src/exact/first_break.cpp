@@ -10,6 +10,7 @@
 
 #include "exact/break_scan.h"
 #include "exact/exact_chain.h"
+#include "physics/stop_flag.h"
 
 namespace cb {
 
@@ -94,7 +95,7 @@ std::vector<FirstBreak> breaking_map(const ChainParams& chain, const std::vector
             [&](std::size_t a, std::size_t b) { return zeta_c[a] < zeta_c[b]; });
   std::vector<FirstBreak> out(zeta_c.size());
   for (std::size_t i : order) {
-    if (stop && stop->load(std::memory_order_relaxed)) break;
+    if (stop_requested(stop)) break;
     out[i] = scan.first(zeta_c[i], t_end);
   }
   return out;

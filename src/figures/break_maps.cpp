@@ -11,6 +11,7 @@
 
 #include "physics/integrator.h"
 #include "physics/run_loop.h"
+#include "physics/stop_flag.h"
 
 namespace cb {
 
@@ -69,19 +70,18 @@ std::vector<MapBoundary> spring_n_boundaries(int beads, double gamma, double zet
                                              double zeta_hi, int samples, double tolerance,
                                              const std::atomic<bool>* stop) {
   assert(samples >= 2 && zeta_hi > zeta_lo);
-  const auto stopped = [&] { return stop && stop->load(std::memory_order_relaxed); };
   const auto is_n = [&](const FirstBreak& b) { return b.broke && b.spring == beads; };
   std::vector<MapBoundary> out;
   double prev_zeta = zeta_lo;
   FirstBreak prev = ramp_first_break(beads, gamma, zeta_lo);
-  for (int i = 1; i < samples && !stopped(); ++i) {
+  for (int i = 1; i < samples && !stop_requested(stop); ++i) {
     const double zeta = zeta_lo + (zeta_hi - zeta_lo) * i / (samples - 1);
     const FirstBreak here = ramp_first_break(beads, gamma, zeta);
     if (is_n(here) != is_n(prev)) {
       // Bisection keeps one end on each side of the switch.
       double lo = prev_zeta, hi = zeta;
       FirstBreak at_lo = prev, at_hi = here;
-      while (hi - lo > tolerance && !stopped()) {
+      while (hi - lo > tolerance && !stop_requested(stop)) {
         const double mid = 0.5 * (lo + hi);
         const FirstBreak m = ramp_first_break(beads, gamma, mid);
         (is_n(m) == is_n(at_lo) ? lo : hi) = mid;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "figures/figure.h"
+#include "physics/stop_flag.h"
 
 namespace cb {
 
@@ -25,7 +26,7 @@ struct FigureOptions {
 
 // True once options.stop is set and true: a builder may then return what it has.
 inline bool stopped(const FigureOptions& o) {
-  return o.stop && o.stop->load(std::memory_order_relaxed);
+  return stop_requested(o.stop);
 }
 
 struct FigureEntry {

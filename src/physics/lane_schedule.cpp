@@ -8,6 +8,8 @@
 #include <string>
 #include <thread>
 
+#include "physics/stop_flag.h"
+
 namespace cb {
 
 LaneSchedule schedule_lanes(const std::vector<int>& beads, bool lanes,
@@ -34,7 +36,6 @@ LaneSchedule schedule_lanes(const std::vector<int>& beads, bool lanes,
 void run_scheduled(const ScheduledRuns& runs, int jobs, const std::atomic<bool>* stop,
                    const std::function<void(std::size_t)>& on_progress) {
   if (jobs <= 0) jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  auto stopped = [stop] { return stop && stop->load(); };
   const LaneSchedule plan = schedule_lanes(runs.beads, runs.lanes, runs.alone);
   // Every worker takes values from the lane groups first (a lane that ends takes the next value
   // of its group), then the values run one by one.
@@ -54,7 +55,7 @@ void run_scheduled(const ScheduledRuns& runs, int jobs, const std::atomic<bool>*
     const auto& group = plan.groups[g];
     auto take = [&]() -> std::optional<LaneJob> {
       const std::size_t k = next_in_group[g]++;
-      if (k >= group.size() || failed || stopped()) return std::nullopt;
+      if (k >= group.size() || failed || stop_requested(stop)) return std::nullopt;
       LaneJob job = runs.job(group[k]);
       job.id = group[k];
       return job;
@@ -66,14 +67,14 @@ void run_scheduled(const ScheduledRuns& runs, int jobs, const std::atomic<bool>*
     run_first_breaks_in_lanes(runs.beads[group.front()], take, end, simd, stop);
   };
   auto worker = [&] {
-    for (std::size_t g = 0; g < plan.groups.size() && !failed && !stopped(); ++g) {
+    for (std::size_t g = 0; g < plan.groups.size() && !failed && !stop_requested(stop); ++g) {
       try {
         lanes(g);
       } catch (const std::exception& e) {
         fail(e);
       }
     }
-    for (std::size_t k; (k = next++) < plan.singles.size() && !failed && !stopped();) {
+    for (std::size_t k; (k = next++) < plan.singles.size() && !failed && !stop_requested(stop);) {
       try {
         runs.single(plan.singles[k]);
       } catch (const std::exception& e) {
@@ -88,7 +89,7 @@ void run_scheduled(const ScheduledRuns& runs, int jobs, const std::atomic<bool>*
   std::thread watcher;
   if (on_progress)
     watcher = std::thread([&] {
-      while (done < runs.count && !stopped() && !failed) {
+      while (done < runs.count && !stop_requested(stop) && !failed) {
         on_progress(done);
         std::this_thread::sleep_for(std::chrono::milliseconds(100));
       }

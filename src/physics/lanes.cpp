@@ -14,6 +14,7 @@
 #include "physics/crossing.h"
 #include "physics/lane_far.h"
 #include "physics/lanes_interval.h"
+#include "physics/stop_flag.h"
 
 namespace cb {
 
@@ -349,7 +350,7 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
       if (lanes[k].active) lanes[k].p_max = p0[k], lanes[k].m_max = m0[k];
   };
   while (std::any_of(std::begin(lanes), std::end(lanes), [](const Lane& l) { return l.active; })) {
-    if (cancel && cancel->load(std::memory_order_relaxed)) return false;
+    if (stop_requested(cancel)) return false;
     // The PerBead stencil as soon as one lane needs it (uniform lanes hold ones: same bits).
     const bool per_bead = std::any_of(std::begin(lanes), std::end(lanes),
                                       [](const Lane& l) { return l.active && l.coef.per_bead; });

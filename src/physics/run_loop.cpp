@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "physics/stop_flag.h"
+
 namespace cb {
 
 std::int64_t after_break_step(double break_tau, double after_break, double dt) {
@@ -34,7 +36,7 @@ RunEnd run_until(Integrator& sim, const StopRule& stop, const std::vector<Observ
   if (on_break()) return RunEnd::Reached;
   observe(true, 0);
   while (sim.steps_done() < last) {
-    if (stop.cancel && stop.cancel->load(std::memory_order_relaxed)) return RunEnd::Cancelled;
+    if (stop_requested(stop.cancel)) return RunEnd::Cancelled;
     // The steps up to the next observation or stop are plain as far as this loop is
     // concerned: the integrator may take them as one temporal block or a run of a small
     // chain's steps (never across a break), and this loop's tests are paid once for all.

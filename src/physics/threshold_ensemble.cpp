@@ -12,6 +12,7 @@
 #include "physics/coefficients.h"
 #include "physics/crossing.h"
 #include "physics/integrator.h"
+#include "physics/stop_flag.h"
 
 namespace cb {
 
@@ -299,7 +300,7 @@ std::vector<LaneEnd> ensemble_first_breaks(const ThresholdEnsemble& e,
     });
   });
   while (ensemble.open() > 0 && sim.steps_done() < e.last_step) {
-    if (stop && stop->load(std::memory_order_relaxed)) break;
+    if (stop_requested(stop)) break;
     if (sim.step_up_to(e.last_step - sim.steps_done()) == 0) {
       ensemble.fail_open();
       break;

@@ -14,6 +14,7 @@
 #include "gl/gl_loader.h"
 #include "output/output_file.h"
 #include "overlay/overlay.h"
+#include "physics/stop_flag.h"
 #include "render/renderer.h"
 #include "viewer/controls.h"
 #include "viewer/dock_layout.h"
@@ -454,8 +455,7 @@ int run_viewer(const ViewerOptions& o) {
   const bool unattended = !o.script.empty() || o.benchmark_frames > 0;
   Window window(frame.width, frame.height, "chainbreak: " + scene.title, !unattended);
   Viewer viewer(o, window, std::move(scene), std::move(actions));
-  auto stopped = [&] { return o.stop && o.stop->load(); };
-  while (!window.should_close() && !stopped()) viewer.frame(Window::now());
+  while (!window.should_close() && !stop_requested(o.stop)) viewer.frame(Window::now());
 
   if (o.benchmark_frames > 0) {
     int fb_w = 0, fb_h = 0;
