@@ -175,7 +175,9 @@ TEST_CASE("interrupted figures: 130/143 and only whole figures", "[interrupt]") 
   // Release, 2026-11-27): its exact maps, its RK4 maps and, from ~0.55 s to ~1.7 s, the bisection
   // of its switches. That last part looked at no signal until session 21 (1.1 s to exit in
   // Release, 1.6 s under ASan, CI's run of stop 39): signals within the first 1.4 s reach all
-  // three parts and still come well before the end. A figure is its PNG and its CSV.
+  // three parts and still come well before the end. A figure is its PNG and its CSV; under ASan
+  // its PNG took 2.5 s to encode (stb's deflate, instrumented: 1.8 s to exit in CI's run of
+  // session 21's work) until session 22 gave the deflate to the system's zlib (16-84 ms to exit).
   check_interrupts(
       "figures", 3, 1.4,
       [](const cb::test::TempDir& dir) {
