@@ -1,4 +1,5 @@
-// PNG files via stb_image_write, written whole or not at all (OutputFile).
+// PNG files (stb_image_write frames them, zlib deflates them), written whole or not at all
+// (OutputFile).
 #pragma once
 
 #include <string>
