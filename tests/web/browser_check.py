@@ -173,6 +173,28 @@ window.chainbreak.ready
 """
 
 
+# WebKitGTK 2.50.6 now and then fails a scene that passes on the next try: its wasm traps
+# ("Out of bounds memory access") or its driver answers "Could not parse script result". Seen
+# in 2 of 15 runs of this check on 2026-11-27 and once in a CI run, on different scenes (weak_link,
+# anomalous_breaking, hanging_chain), never in Chromium's or Firefox's runs of the same page.
+# WebAssembly's semantics leave the trap no room to depend on timing, so we take it for the
+# engine's (with its optimizing tier off, JSC_useOMGJIT=false, 8 runs of 8 passed, which does
+# not prove it). WebKit gets a second try at a scene, printed when taken; both must fail to fail.
+def run_scene(browser, args, name):
+    url = pathlib.Path(args.page).resolve().as_uri() + "?scene=" + name
+    tries = 2 if args.browser == "webkit" else 1
+    for attempt in range(1, tries + 1):
+        try:
+            browser.navigate(url)
+            got = browser.run_async(RUN_TO_END)
+        except RuntimeError as e:  # the driver's error (HTTP 500)
+            got = {"error": f"driver: {e}"}
+        if "error" not in got or attempt == tries:
+            return got
+        print(f"{name}: try {attempt} failed ({got['error'][:200]}); trying again")
+    return got
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("page")
@@ -190,8 +212,7 @@ def main():
     try:
         print(browser.version)
         for name in SCENES:
-            browser.navigate(pathlib.Path(args.page).resolve().as_uri() + "?scene=" + name)
-            got = browser.run_async(RUN_TO_END)
+            got = run_scene(browser, args, name)
             if "error" in got:
                 print(f"{name}: FAILED in the page: {got['error']}")
                 failures += 1
