@@ -192,7 +192,6 @@ def run_scene(browser, args, name):
         if "error" not in got or attempt == tries:
             return got
         print(f"{name}: try {attempt} failed ({got['error'][:200]}); trying again")
-    return got
 
 
 def main():
