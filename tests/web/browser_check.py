@@ -169,7 +169,7 @@ window.chainbreak.ready
   .then((state) => done({state, webgl2: !!document.getElementById('chain').getContext('webgl2'),
                          message: document.getElementById('gl-error').textContent,
                          agent: navigator.userAgent}))
-  .catch((e) => done({error: String(e)}));
+  .catch((e) => done({error: String(e) + (e && e.stack ? '\nstack: ' + e.stack : '')}));
 """
 
 
@@ -191,7 +191,7 @@ def run_scene(browser, args, name):
             got = {"error": f"driver: {e}"}
         if "error" not in got or attempt == tries:
             return got
-        print(f"{name}: try {attempt} failed ({got['error'][:200]}); trying again")
+        print(f"{name}: try {attempt} failed ({got['error'][:4000]}); trying again")
 
 
 def main():
