@@ -169,7 +169,7 @@ window.chainbreak.ready
   .then((state) => done({state, webgl2: !!document.getElementById('chain').getContext('webgl2'),
                          message: document.getElementById('gl-error').textContent,
                          agent: navigator.userAgent}))
-  .catch((e) => done({error: String(e) + (e && e.stack ? '\nstack: ' + e.stack : '')}));
+  .catch((e) => done({error: String(e) + (e && e.stack ? ' stack: ' + e.stack : '')}));
 """
 
 
