@@ -24,12 +24,14 @@
 
 #include <algorithm>
 #include <cfloat>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bench_support.h"
@@ -41,6 +43,13 @@
 #include "rk4_workload.h"
 
 namespace {
+
+// Skips a benchmark whose instruction set this CPU lacks, saying so; true when skipped.
+bool skip_without(benchmark::State& state, cb::SimdPath simd) {
+  if (cb::simd_supported(simd)) return false;
+  state.SkipWithError((std::string("no ") + cb::simd_name(simd) + " on this CPU").c_str());
+  return true;
+}
 
 // The same interface over cb::Integrator, for warm_up().
 struct FusedSim {
@@ -72,10 +81,7 @@ void run_fused_rk4(benchmark::State& state, int beads, int threads, bool breakab
   p.fput_alpha = fput_alpha;  // anharmonic springs (issue #24); 0: the harmonic chain
   p.fput_beta = fput_beta;
   if (breakable) p.threshold = 1e300;
-  if (!cb::simd_supported(simd)) {
-    state.SkipWithError((std::string("no ") + cb::simd_name(simd) + " on this CPU").c_str());
-    return;
-  }
+  if (skip_without(state, simd)) return;
   cb::IntegratorOptions options{kDt, threads, simd};
   options.tiled_only = tiled_only;
   if (block >= 0) options.block_steps = block;
@@ -102,29 +108,34 @@ void BM_FusedRK4(benchmark::State& state) {
                 static_cast<int>(state.range(4)));
 }
 
-// Args: {beads, simd, unequal}. Issue #21's goal: a chain of unequal masses and stiffnesses
-// (the PerBead policy of physics/stencil.inc: 1/m_j, K_j, K_{j+1} read at every bead) against
-// the homogeneous chain (unequal 0, the Uniform policy), one thread, the Integrator's own
-// choice of kernel and blocking, in the same run. The unequal chain: m_j = 1 + 0.5 sin(0.37 j),
-// K_j = 1 + 0.4 cos(0.11 j), unbreakable.
-void BM_UnequalRK4(benchmark::State& state) {
-  const int beads = static_cast<int>(state.range(0));
-  const auto simd = static_cast<cb::SimdPath>(state.range(1));
+// BM_UnequalRK4's chains: the homogeneous one, and one with m_j = 1 + 0.5 sin(0.37 j), K_j = 1 +
+// 0.4 cos(0.11 j); both with friction, unbreakable.
+cb::ChainParams uniform_chain(int beads) {
   cb::ChainParams p;
   p.beads = beads;
   p.gamma = kGamma;
-  if (state.range(2) != 0) {
-    p.mass.resize(beads);
-    p.stiffness.resize(beads);
-    for (int j = 1; j <= beads; ++j) {
-      p.mass[j - 1] = 1.0 + 0.5 * std::sin(0.37 * j);
-      p.stiffness[j - 1] = 1.0 + 0.4 * std::cos(0.11 * j);
-    }
+  return p;
+}
+cb::ChainParams unequal_chain(int beads) {
+  cb::ChainParams p = uniform_chain(beads);
+  p.mass.resize(beads);
+  p.stiffness.resize(beads);
+  for (int j = 1; j <= beads; ++j) {
+    p.mass[j - 1] = 1.0 + 0.5 * std::sin(0.37 * j);
+    p.stiffness[j - 1] = 1.0 + 0.4 * std::cos(0.11 * j);
   }
-  if (!cb::simd_supported(simd)) {
-    state.SkipWithError((std::string("no ") + cb::simd_name(simd) + " on this CPU").c_str());
-    return;
-  }
+  return p;
+}
+
+// Args: {beads, simd, unequal}. Issue #21's goal: a chain of unequal masses and stiffnesses
+// (the PerBead policy of physics/stencil.inc: 1/m_j, K_j, K_{j+1} read at every bead) against
+// the homogeneous chain (unequal 0, the Uniform policy), one thread, the Integrator's own
+// choice of kernel and blocking, in the same run (unequal_chain above).
+void BM_UnequalRK4(benchmark::State& state) {
+  const int beads = static_cast<int>(state.range(0));
+  const auto simd = static_cast<cb::SimdPath>(state.range(1));
+  const cb::ChainParams p = state.range(2) != 0 ? unequal_chain(beads) : uniform_chain(beads);
+  if (skip_without(state, simd)) return;
   cb::Integrator sim(p, ramp_forcing(), {kDt, 1, simd});
   FusedSim fused{sim};
   warm_up(fused);
@@ -137,6 +148,116 @@ void BM_UnequalRK4(benchmark::State& state) {
   }
   benchmark::DoNotOptimize(sim.state().psi.back());
   set_counters(state, p.beads, steps, 32);
+}
+
+// ---------------------------------------------------------------------------------------
+// Paired measurements. This VM's speed drifts by up to 30 % within minutes, and not alike for
+// everything (PLATFORM-NOTES.md): two benchmarks of one run can catch different halves of a
+// drift, so a ratio of two of them moves by as much. Here each benchmark iteration times both
+// workloads one after the other (their order alternating), and the ratio is taken iteration by
+// iteration: both halves of every ratio come from the same second. Reported: the median ratio
+// `ratio` and its quartiles `ratio_q1`, `ratio_q3`.
+double quantile(std::vector<double> v, double at) {
+  if (v.empty()) return 0.0;
+  const auto k = static_cast<std::ptrdiff_t>(at * static_cast<double>(v.size() - 1) + 0.5);
+  std::nth_element(v.begin(), v.begin() + k, v.end());
+  return v[static_cast<std::size_t>(k)];
+}
+
+// Seconds of `a` and of `b` in each iteration.
+template <class A, class B>
+std::vector<std::pair<double, double>> time_paired(benchmark::State& state, A&& a, B&& b) {
+  const auto seconds = [](auto&& work) {
+    const auto t0 = std::chrono::steady_clock::now();
+    work();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  };
+  std::vector<std::pair<double, double>> times;
+  for (auto _ : state) {
+    double ta, tb;
+    if (times.size() % 2 == 0) {
+      ta = seconds(a);
+      tb = seconds(b);
+    } else {
+      tb = seconds(b);
+      ta = seconds(a);
+    }
+    state.SetIterationTime(ta + tb);
+    times.emplace_back(ta, tb);
+  }
+  return times;
+}
+
+void report_ratios(benchmark::State& state, const std::vector<double>& ratios) {
+  state.counters["ratio"] = quantile(ratios, 0.5);
+  state.counters["ratio_q1"] = quantile(ratios, 0.25);
+  state.counters["ratio_q3"] = quantile(ratios, 0.75);
+}
+
+// Args: {beads, simd}. Issue #21's ratio paired: the two chains of BM_UnequalRK4 (unequal /
+// homogeneous bead-steps/s, the same steps each), and each chain's median rate in M
+// bead-steps/s.
+void BM_UnequalPaired(benchmark::State& state) {
+  const int beads = static_cast<int>(state.range(0));
+  const auto simd = static_cast<cb::SimdPath>(state.range(1));
+  if (skip_without(state, simd)) return;
+  cb::Integrator uniform(uniform_chain(beads), ramp_forcing(), {kDt, 1, simd});
+  cb::Integrator unequal(unequal_chain(beads), ramp_forcing(), {kDt, 1, simd});
+  FusedSim fu{uniform}, fq{unequal};
+  warm_up(fu);
+  warm_up(fq);
+  const int steps = beads >= 1'000'000 ? 16 : steps_per_iteration(beads);
+  const auto stepper = [&](cb::Integrator& sim) {
+    return [&state, &sim, steps] {
+      if (!sim.advance_to(sim.state().step + steps)) state.SkipWithError(sim.error().c_str());
+    };
+  };
+  const auto times = time_paired(state, stepper(uniform), stepper(unequal));
+  std::vector<double> ratios, rate_u, rate_q;
+  const double work = static_cast<double>(beads) * steps;
+  for (const auto& [tu, tq] : times) {
+    ratios.push_back(tu / tq);
+    rate_u.push_back(work / tu / 1e6);
+    rate_q.push_back(work / tq / 1e6);
+  }
+  report_ratios(state, ratios);
+  state.counters["uniform_M"] = quantile(rate_u, 0.5);
+  state.counters["unequal_M"] = quantile(rate_q, 0.5);
+  benchmark::DoNotOptimize(uniform.state().psi.back() + unequal.state().psi.back());
+}
+
+// The STREAM triad over arrays of equal length.
+void triad_pass(std::vector<double>& a, const std::vector<double>& b, const std::vector<double>& c,
+                double s) {
+  double* pa = a.data();
+  const double* pb = b.data();
+  const double* pc = c.data();
+  const std::size_t n = a.size();
+  for (std::size_t i = 0; i < n; ++i) pa[i] = pb[i] + s * pc[i];
+  benchmark::ClobberMemory();
+}
+
+// Args: {simd}. Issue #21's AVX2 goal paired: the homogeneous chain at N = 1e7 on one thread
+// (the Integrator's default blocking), 16 steps, against 16 passes of the triad over 1e7
+// doubles: `ratio` = (32 B x bead-steps/s) / (24 B x triad elements/s), the share of the
+// memory ceiling that "Fused bytes/s / triad" reports from two benchmarks.
+void BM_CeilingPaired(benchmark::State& state) {
+  const auto simd = static_cast<cb::SimdPath>(state.range(0));
+  if (skip_without(state, simd)) return;
+  constexpr int kBeads = 10'000'000, kSteps = 16, kPasses = 16;
+  cb::Integrator sim(uniform_chain(kBeads), ramp_forcing(), {kDt, 1, simd});
+  std::vector<double> a(kBeads, 0.0), b(kBeads, 1.0), c(kBeads, 2.0);
+  const auto chain = [&] {
+    if (!sim.advance_to(sim.state().step + kSteps)) state.SkipWithError(sim.error().c_str());
+  };
+  const auto triad = [&] {
+    for (int k = 0; k < kPasses; ++k) triad_pass(a, b, c, 3.0);
+  };
+  std::vector<double> ratios;
+  for (const auto& [tc, tt] : time_paired(state, chain, triad))
+    ratios.push_back((32.0 / tc) / (24.0 * kPasses / (tt * kSteps)));
+  report_ratios(state, ratios);
+  benchmark::DoNotOptimize(a[kBeads / 2] + sim.state().psi.back());
 }
 
 // Args: {beads, simd}. BM_FusedRK4 on one thread with the small-chain kernel turned off
@@ -164,10 +285,7 @@ void BM_FputRK4(benchmark::State& state) {
 void run_lanes_rk4(benchmark::State& state, double gamma) {
   const int beads = static_cast<int>(state.range(0));
   const auto simd = static_cast<cb::SimdPath>(state.range(1));
-  if (!cb::simd_supported(simd)) {
-    state.SkipWithError((std::string("no ") + cb::simd_name(simd) + " on this CPU").c_str());
-    return;
-  }
+  if (skip_without(state, simd)) return;
   const int steps = steps_per_iteration(beads);
   constexpr int kValues = 8;
   for (auto _ : state) {
@@ -240,14 +358,7 @@ void BM_FusedFromRest(benchmark::State& state) {
 void BM_Triad(benchmark::State& state) {
   const std::size_t n = static_cast<std::size_t>(state.range(0));
   std::vector<double> a(n, 0.0), b(n, 1.0), c(n, 2.0);
-  const double s = 3.0;
-  for (auto _ : state) {
-    double* pa = a.data();
-    const double* pb = b.data();
-    const double* pc = c.data();
-    for (std::size_t i = 0; i < n; ++i) pa[i] = pb[i] + s * pc[i];
-    benchmark::ClobberMemory();
-  }
+  for (auto _ : state) triad_pass(a, b, c, 3.0);
   benchmark::DoNotOptimize(a[n / 2]);
   state.counters["elements"] =
       benchmark::Counter(static_cast<double>(n * state.iterations()), benchmark::Counter::kIsRate);
@@ -314,6 +425,26 @@ BENCHMARK(BM_UnequalRK4)
     ->ArgNames({"N", "simd", "unequal"})
     ->ArgsProduct({{30, 1'000, 10'000'000}, {1, 2}, {0, 1}})
     ->Apply(common);
+// Paired: 2 s of iterations at N = 30 and 1e3; 21 iterations at N = 1e7 (about 20 s each).
+BENCHMARK(BM_UnequalPaired)
+    ->ArgNames({"N", "simd"})
+    ->ArgsProduct({{30, 1'000}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(2.0)
+    ->UseManualTime();
+BENCHMARK(BM_UnequalPaired)
+    ->ArgNames({"N", "simd"})
+    ->ArgsProduct({{10'000'000}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(21)
+    ->UseManualTime();
+BENCHMARK(BM_CeilingPaired)
+    ->ArgName("simd")
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(21)
+    ->UseManualTime();
 BENCHMARK(BM_FusedTiledRK4)
     ->ArgNames({"N", "simd"})
     ->ArgsProduct({{30, 1'000}, {0, 1, 2}})
