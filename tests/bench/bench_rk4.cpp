@@ -67,24 +67,11 @@ cb::Forcing ramp_forcing() {
 }
 
 // ---------------------------------------------------------------------------------------
-// cb::Integrator on a chain from rest, warmed up. Breakable uses a finite threshold no spring
-// can reach, so the result is the same but every step pays for the crossing checks. A path the
-// CPU lacks is skipped. block: steps per temporal block (IntegratorOptions::block_steps; 1 off,
-// -1 the Integrator's default). At N >= 1e6 an iteration is 16 steps (two blocks of the
-// default 8), blocked or not.
-void run_fused_rk4(benchmark::State& state, int beads, int threads, bool breakable,
-                   cb::SimdPath simd, bool tiled_only, int block, double fput_alpha = 0.0,
-                   double fput_beta = 0.0) {
-  cb::ChainParams p;
-  p.beads = beads;
-  p.gamma = kGamma;
-  p.fput_alpha = fput_alpha;  // anharmonic springs (issue #24); 0: the harmonic chain
-  p.fput_beta = fput_beta;
-  if (breakable) p.threshold = 1e300;
-  if (skip_without(state, simd)) return;
-  cb::IntegratorOptions options{kDt, threads, simd};
-  options.tiled_only = tiled_only;
-  if (block >= 0) options.block_steps = block;
+// cb::Integrator on the chain p from rest, warmed up; a path the CPU lacks is skipped. At
+// N >= 1e6 an iteration is 16 steps (two blocks of the default 8), blocked or not.
+void time_integrator(benchmark::State& state, const cb::ChainParams& p,
+                     const cb::IntegratorOptions& options) {
+  if (options.simd && skip_without(state, *options.simd)) return;
   cb::Integrator sim(p, ramp_forcing(), options);
   FusedSim fused{sim};
   warm_up(fused);
@@ -98,6 +85,24 @@ void run_fused_rk4(benchmark::State& state, int beads, int threads, bool breakab
   benchmark::DoNotOptimize(sim.state().psi.back());
   set_counters(state, p.beads, steps, 32);
   state.counters["subnormal"] = static_cast<double>(beads_subnormal(fused.psi(), fused.vel()));
+}
+
+// time_integrator on the homogeneous chain. Breakable uses a finite threshold no spring can
+// reach, so the result is the same but every step pays for the crossing checks. block: steps
+// per temporal block (IntegratorOptions::block_steps; 1 off, -1 the Integrator's default).
+void run_fused_rk4(benchmark::State& state, int beads, int threads, bool breakable,
+                   cb::SimdPath simd, bool tiled_only, int block, double fput_alpha = 0.0,
+                   double fput_beta = 0.0) {
+  cb::ChainParams p;
+  p.beads = beads;
+  p.gamma = kGamma;
+  p.fput_alpha = fput_alpha;  // anharmonic springs (issue #24); 0: the harmonic chain
+  p.fput_beta = fput_beta;
+  if (breakable) p.threshold = 1e300;
+  cb::IntegratorOptions options{kDt, threads, simd};
+  options.tiled_only = tiled_only;
+  if (block >= 0) options.block_steps = block;
+  time_integrator(state, p, options);
 }
 
 // Args: {beads, threads, breakable, simd, block}; simd: 0 sse2, 1 avx2, 2 avx512
@@ -134,20 +139,8 @@ cb::ChainParams unequal_chain(int beads) {
 void BM_UnequalRK4(benchmark::State& state) {
   const int beads = static_cast<int>(state.range(0));
   const auto simd = static_cast<cb::SimdPath>(state.range(1));
-  const cb::ChainParams p = state.range(2) != 0 ? unequal_chain(beads) : uniform_chain(beads);
-  if (skip_without(state, simd)) return;
-  cb::Integrator sim(p, ramp_forcing(), {kDt, 1, simd});
-  FusedSim fused{sim};
-  warm_up(fused);
-  const int steps = p.beads >= 1'000'000 ? 16 : steps_per_iteration(p.beads);
-  for (auto _ : state) {
-    if (!sim.advance_to(sim.state().step + steps)) {
-      state.SkipWithError(sim.error().c_str());
-      break;
-    }
-  }
-  benchmark::DoNotOptimize(sim.state().psi.back());
-  set_counters(state, p.beads, steps, 32);
+  time_integrator(state, state.range(2) != 0 ? unequal_chain(beads) : uniform_chain(beads),
+                  {kDt, 1, simd});
 }
 
 // ---------------------------------------------------------------------------------------
