@@ -181,6 +181,13 @@ std::vector<std::pair<double, double>> time_paired(benchmark::State& state, A&& 
   return times;
 }
 
+// A workload for time_paired: `steps` more steps of sim (a failure skips the benchmark).
+auto stepping(benchmark::State& state, cb::Integrator& sim, int steps) {
+  return [&state, &sim, steps] {
+    if (!sim.advance_to(sim.state().step + steps)) state.SkipWithError(sim.error().c_str());
+  };
+}
+
 void report_ratios(benchmark::State& state, const std::vector<double>& ratios) {
   state.counters["ratio"] = quantile(ratios, 0.5);
   state.counters["ratio_q1"] = quantile(ratios, 0.25);
@@ -200,12 +207,8 @@ void BM_UnequalPaired(benchmark::State& state) {
   warm_up(fu);
   warm_up(fq);
   const int steps = beads >= 1'000'000 ? 16 : steps_per_iteration(beads);
-  const auto stepper = [&](cb::Integrator& sim) {
-    return [&state, &sim, steps] {
-      if (!sim.advance_to(sim.state().step + steps)) state.SkipWithError(sim.error().c_str());
-    };
-  };
-  const auto times = time_paired(state, stepper(uniform), stepper(unequal));
+  const auto times =
+      time_paired(state, stepping(state, uniform, steps), stepping(state, unequal, steps));
   std::vector<double> ratios, rate_u, rate_q;
   const double work = static_cast<double>(beads) * steps;
   for (const auto& [tu, tq] : times) {
@@ -240,14 +243,11 @@ void BM_CeilingPaired(benchmark::State& state) {
   constexpr int kBeads = 10'000'000, kSteps = 16, kPasses = 16;
   cb::Integrator sim(uniform_chain(kBeads), ramp_forcing(), {kDt, 1, simd});
   std::vector<double> a(kBeads, 0.0), b(kBeads, 1.0), c(kBeads, 2.0);
-  const auto chain = [&] {
-    if (!sim.advance_to(sim.state().step + kSteps)) state.SkipWithError(sim.error().c_str());
-  };
   const auto triad = [&] {
     for (int k = 0; k < kPasses; ++k) triad_pass(a, b, c, 3.0);
   };
   std::vector<double> ratios;
-  for (const auto& [tc, tt] : time_paired(state, chain, triad))
+  for (const auto& [tc, tt] : time_paired(state, stepping(state, sim, kSteps), triad))
     ratios.push_back((32.0 / tc) / (24.0 * kPasses / (tt * kSteps)));
   report_ratios(state, ratios);
   benchmark::DoNotOptimize(a[kBeads / 2] + sim.state().psi.back());
