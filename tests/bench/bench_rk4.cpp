@@ -143,55 +143,12 @@ void BM_UnequalRK4(benchmark::State& state) {
                   {kDt, 1, simd});
 }
 
-// ---------------------------------------------------------------------------------------
-// Paired measurements. This VM's speed drifts by up to 30 % within minutes, and not alike for
-// everything (PLATFORM-NOTES.md): two benchmarks of one run can catch different halves of a
-// drift, so a ratio of two of them moves by as much. Here each benchmark iteration times both
-// workloads one after the other (their order alternating), and the ratio is taken iteration by
-// iteration: both halves of every ratio come from the same second. Reported: the median ratio
-// `ratio` and its quartiles `ratio_q1`, `ratio_q3`.
-double quantile(std::vector<double> v, double at) {
-  if (v.empty()) return 0.0;
-  const auto k = static_cast<std::ptrdiff_t>(at * static_cast<double>(v.size() - 1) + 0.5);
-  std::nth_element(v.begin(), v.begin() + k, v.end());
-  return v[static_cast<std::size_t>(k)];
-}
-
-// Seconds of `a` and of `b` in each iteration.
-template <class A, class B>
-std::vector<std::pair<double, double>> time_paired(benchmark::State& state, A&& a, B&& b) {
-  const auto seconds = [](auto&& work) {
-    const auto t0 = std::chrono::steady_clock::now();
-    work();
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  };
-  std::vector<std::pair<double, double>> times;
-  for (auto _ : state) {
-    double ta, tb;
-    if (times.size() % 2 == 0) {
-      ta = seconds(a);
-      tb = seconds(b);
-    } else {
-      tb = seconds(b);
-      ta = seconds(a);
-    }
-    state.SetIterationTime(ta + tb);
-    times.emplace_back(ta, tb);
-  }
-  return times;
-}
-
+// Paired measurements (bench_support.h: time_paired, report_ratios).
 // A workload for time_paired: `steps` more steps of sim (a failure skips the benchmark).
 auto stepping(benchmark::State& state, cb::Integrator& sim, int steps) {
   return [&state, &sim, steps] {
     if (!sim.advance_to(sim.state().step + steps)) state.SkipWithError(sim.error().c_str());
   };
-}
-
-void report_ratios(benchmark::State& state, const std::vector<double>& ratios) {
-  state.counters["ratio"] = quantile(ratios, 0.5);
-  state.counters["ratio_q1"] = quantile(ratios, 0.25);
-  state.counters["ratio_q3"] = quantile(ratios, 0.75);
 }
 
 // Args: {beads, simd}. Issue #21's ratio paired: the two chains of BM_UnequalRK4 (unequal /
@@ -207,8 +164,8 @@ void BM_UnequalPaired(benchmark::State& state) {
   warm_up(fu);
   warm_up(fq);
   const int steps = beads >= 1'000'000 ? 16 : steps_per_iteration(beads);
-  const auto times =
-      time_paired(state, stepping(state, uniform, steps), stepping(state, unequal, steps));
+  const auto times = cb::bench::time_paired(state, stepping(state, uniform, steps),
+                                            stepping(state, unequal, steps));
   std::vector<double> ratios, rate_u, rate_q;
   const double work = static_cast<double>(beads) * steps;
   for (const auto& [tu, tq] : times) {
@@ -216,9 +173,9 @@ void BM_UnequalPaired(benchmark::State& state) {
     rate_u.push_back(work / tu / 1e6);
     rate_q.push_back(work / tq / 1e6);
   }
-  report_ratios(state, ratios);
-  state.counters["uniform_M"] = quantile(rate_u, 0.5);
-  state.counters["unequal_M"] = quantile(rate_q, 0.5);
+  cb::bench::report_ratios(state, ratios);
+  state.counters["uniform_M"] = cb::bench::quantile(rate_u, 0.5);
+  state.counters["unequal_M"] = cb::bench::quantile(rate_q, 0.5);
   benchmark::DoNotOptimize(uniform.state().psi.back() + unequal.state().psi.back());
 }
 
@@ -247,9 +204,9 @@ void BM_CeilingPaired(benchmark::State& state) {
     for (int k = 0; k < kPasses; ++k) triad_pass(a, b, c, 3.0);
   };
   std::vector<double> ratios;
-  for (const auto& [tc, tt] : time_paired(state, stepping(state, sim, kSteps), triad))
+  for (const auto& [tc, tt] : cb::bench::time_paired(state, stepping(state, sim, kSteps), triad))
     ratios.push_back((32.0 / tc) / (24.0 * kPasses / (tt * kSteps)));
-  report_ratios(state, ratios);
+  cb::bench::report_ratios(state, ratios);
   benchmark::DoNotOptimize(a[kBeads / 2] + sim.state().psi.back());
 }
 
