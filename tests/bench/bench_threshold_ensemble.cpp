@@ -111,8 +111,9 @@ void BM_EnsemblePaired(benchmark::State& state) {
 // bits are fixed (the frozen hashes of tests/test_simd.cpp hash break times). Here one root a
 // seed and nothing else: a cubic rising through the seed's own threshold of the spring that
 // breaks first, within one step (phi from 0.999 c to 1.001 c). Paired with the last seed's run:
-// `ratio` = these roots alone / one run. Where it is near or above 2, no design that keeps the
-// root finder meets the goal, however it finds the crossings.
+// `ratio` = these roots alone / one run. The ensemble also steps the chain as long as that run
+// does, so where `ratio` is above 1, no design that keeps the root finder meets the goal (under
+// 2), however it finds the crossings.
 void BM_RootsFloorPaired(benchmark::State& state) {
   const double beta = state.range(0) / 1000.0;
   const cb::ThresholdEnsemble e = ensemble_of(beta);
