@@ -24,14 +24,12 @@
 
 #include <algorithm>
 #include <cfloat>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <functional>
 #include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "bench_support.h"
@@ -66,6 +64,25 @@ cb::Forcing ramp_forcing() {
   return cb::make_forcing(d);
 }
 
+// BM_UnequalRK4's chains: the homogeneous one, and one with m_j = 1 + 0.5 sin(0.37 j), K_j = 1 +
+// 0.4 cos(0.11 j); both with friction, unbreakable.
+cb::ChainParams uniform_chain(int beads) {
+  cb::ChainParams p;
+  p.beads = beads;
+  p.gamma = kGamma;
+  return p;
+}
+cb::ChainParams unequal_chain(int beads) {
+  cb::ChainParams p = uniform_chain(beads);
+  p.mass.resize(beads);
+  p.stiffness.resize(beads);
+  for (int j = 1; j <= beads; ++j) {
+    p.mass[j - 1] = 1.0 + 0.5 * std::sin(0.37 * j);
+    p.stiffness[j - 1] = 1.0 + 0.4 * std::cos(0.11 * j);
+  }
+  return p;
+}
+
 // ---------------------------------------------------------------------------------------
 // cb::Integrator on the chain p from rest, warmed up; a path the CPU lacks is skipped. At
 // N >= 1e6 an iteration is 16 steps (two blocks of the default 8), blocked or not.
@@ -93,9 +110,7 @@ void time_integrator(benchmark::State& state, const cb::ChainParams& p,
 void run_fused_rk4(benchmark::State& state, int beads, int threads, bool breakable,
                    cb::SimdPath simd, bool tiled_only, int block, double fput_alpha = 0.0,
                    double fput_beta = 0.0) {
-  cb::ChainParams p;
-  p.beads = beads;
-  p.gamma = kGamma;
+  cb::ChainParams p = uniform_chain(beads);
   p.fput_alpha = fput_alpha;  // anharmonic springs (issue #24); 0: the harmonic chain
   p.fput_beta = fput_beta;
   if (breakable) p.threshold = 1e300;
@@ -113,25 +128,6 @@ void BM_FusedRK4(benchmark::State& state) {
                 static_cast<int>(state.range(4)));
 }
 
-// BM_UnequalRK4's chains: the homogeneous one, and one with m_j = 1 + 0.5 sin(0.37 j), K_j = 1 +
-// 0.4 cos(0.11 j); both with friction, unbreakable.
-cb::ChainParams uniform_chain(int beads) {
-  cb::ChainParams p;
-  p.beads = beads;
-  p.gamma = kGamma;
-  return p;
-}
-cb::ChainParams unequal_chain(int beads) {
-  cb::ChainParams p = uniform_chain(beads);
-  p.mass.resize(beads);
-  p.stiffness.resize(beads);
-  for (int j = 1; j <= beads; ++j) {
-    p.mass[j - 1] = 1.0 + 0.5 * std::sin(0.37 * j);
-    p.stiffness[j - 1] = 1.0 + 0.4 * std::cos(0.11 * j);
-  }
-  return p;
-}
-
 // Args: {beads, simd, unequal}. Issue #21's goal: a chain of unequal masses and stiffnesses
 // (the PerBead policy of physics/stencil.inc: 1/m_j, K_j, K_{j+1} read at every bead) against
 // the homogeneous chain (unequal 0, the Uniform policy), one thread, the Integrator's own
@@ -143,8 +139,8 @@ void BM_UnequalRK4(benchmark::State& state) {
                   {kDt, 1, simd});
 }
 
-// Paired measurements (bench_support.h: time_paired, report_ratios).
-// A workload for time_paired: `steps` more steps of sim (a failure skips the benchmark).
+// Paired measurements (bench_support.h: time_paired, report_ratios). A workload for time_paired:
+// `steps` more steps of sim (a failure skips the benchmark).
 auto stepping(benchmark::State& state, cb::Integrator& sim, int steps) {
   return [&state, &sim, steps] {
     if (!sim.advance_to(sim.state().step + steps)) state.SkipWithError(sim.error().c_str());
