@@ -81,6 +81,22 @@ std::size_t last_to_break(const std::vector<cb::LaneEnd>& ends) {
   return last;
 }
 
+// The chain of the seed that breaks last in `ends` (the ensemble's run lasts as long as its).
+cb::ChainParams last_seed(const std::vector<cb::LaneEnd>& ends) {
+  return chain_of(static_cast<int>(last_to_break(ends)) + 1);
+}
+
+// `work` and the run of `last` (the seed that breaks last) timed paired in each iteration
+// (bench_support.h); reports `ratio` = work / one run, with its quartiles.
+template <class Work>
+void ratio_to_run(benchmark::State& state, Work&& work, const cb::ChainParams& last, double beta) {
+  std::vector<double> ratios;
+  for (const auto& [tw, tr] :
+       cb::bench::time_paired(state, work, [&] { benchmark::DoNotOptimize(one_run(last, beta)); }))
+    ratios.push_back(tw / tr);
+  cb::bench::report_ratios(state, ratios);
+}
+
 // The seed of the ensemble that breaks last, alone.
 void BM_OneRunLastSeed(benchmark::State& state) {
   const double beta = state.range(0) / 1000.0;
@@ -96,14 +112,9 @@ void BM_OneRunLastSeed(benchmark::State& state) {
 void BM_EnsemblePaired(benchmark::State& state) {
   const double beta = state.range(0) / 1000.0;
   const cb::ThresholdEnsemble e = ensemble_of(beta);
-  const cb::ChainParams p =
-      chain_of(static_cast<int>(last_to_break(cb::ensemble_first_breaks(e))) + 1);
-  std::vector<double> ratios;
-  for (const auto& [te, tr] : cb::bench::time_paired(
-           state, [&] { benchmark::DoNotOptimize(cb::ensemble_first_breaks(e)); },
-           [&] { benchmark::DoNotOptimize(one_run(p, beta)); }))
-    ratios.push_back(te / tr);
-  cb::bench::report_ratios(state, ratios);
+  ratio_to_run(
+      state, [&] { benchmark::DoNotOptimize(cb::ensemble_first_breaks(e)); },
+      last_seed(cb::ensemble_first_breaks(e)), beta);
 }
 
 // A floor under any ensemble whose seeds keep `run`'s break times bit for bit: each seed's time
@@ -119,7 +130,6 @@ void BM_RootsFloorPaired(benchmark::State& state) {
   const double beta = state.range(0) / 1000.0;
   const cb::ThresholdEnsemble e = ensemble_of(beta);
   const auto ends = cb::ensemble_first_breaks(e);
-  const cb::ChainParams p = chain_of(static_cast<int>(last_to_break(ends)) + 1);
   std::vector<double> c;
   for (std::size_t m = 0; m < ends.size(); ++m)
     if (ends[m].kind == cb::LaneEnd::Kind::Broke)
@@ -134,11 +144,7 @@ void BM_RootsFloorPaired(benchmark::State& state) {
     cb::detail::finish_hermite_roots(roots.data(), roots.size());
     benchmark::DoNotOptimize(roots.data());
   };
-  std::vector<double> ratios;
-  for (const auto& [tf, tr] : cb::bench::time_paired(
-           state, all_roots, [&] { benchmark::DoNotOptimize(one_run(p, beta)); }))
-    ratios.push_back(tf / tr);
-  cb::bench::report_ratios(state, ratios);
+  ratio_to_run(state, all_roots, last_seed(ends), beta);
   state.counters["seeds"] = static_cast<double>(c.size());
   // Each cubic is a straight line through c at mid-step: every root found there.
   state.counters["at_mid_step"] = static_cast<double>(std::count_if(
@@ -155,21 +161,14 @@ void BM_RootsFloorPaired(benchmark::State& state) {
 void BM_ReadFloorPaired(benchmark::State& state) {
   const double beta = state.range(0) / 1000.0;
   const cb::ThresholdEnsemble e = ensemble_of(beta);
-  const cb::ChainParams p =
-      chain_of(static_cast<int>(last_to_break(cb::ensemble_first_breaks(e))) + 1);
   std::vector<double> lowest(kBeads);
   const auto read_all = [&] {
     std::fill(lowest.begin(), lowest.end(), std::numeric_limits<double>::infinity());
     for (std::size_t m = 0; m < e.thresholds.size(); m += kBeads)
-      for (std::size_t j = 0; j < kBeads; ++j)
-        lowest[j] = std::min(lowest[j], e.thresholds[m + j]);
+      for (std::size_t j = 0; j < kBeads; ++j) lowest[j] = std::min(lowest[j], e.thresholds[m + j]);
     benchmark::DoNotOptimize(lowest.data());
   };
-  std::vector<double> ratios;
-  for (const auto& [tf, tr] : cb::bench::time_paired(
-           state, read_all, [&] { benchmark::DoNotOptimize(one_run(p, beta)); }))
-    ratios.push_back(tf / tr);
-  cb::bench::report_ratios(state, ratios);
+  ratio_to_run(state, read_all, last_seed(cb::ensemble_first_breaks(e)), beta);
 }
 
 // What a sweep over seeds pays before any ensemble: drawing the 10^4 seeds' thresholds
@@ -177,16 +176,10 @@ void BM_ReadFloorPaired(benchmark::State& state) {
 // the goal's ratio (the ensemble is handed its thresholds), but part of a user's wait.
 void BM_DrawPaired(benchmark::State& state) {
   const double beta = state.range(0) / 1000.0;
-  const cb::ChainParams p =
-      chain_of(static_cast<int>(last_to_break(cb::ensemble_first_breaks(ensemble_of(beta)))) + 1);
   const auto draw_all = [&] {
     for (int s = 1; s <= kSeeds; ++s) benchmark::DoNotOptimize(chain_of(s).thresholds.data());
   };
-  std::vector<double> ratios;
-  for (const auto& [td, tr] : cb::bench::time_paired(
-           state, draw_all, [&] { benchmark::DoNotOptimize(one_run(p, beta)); }))
-    ratios.push_back(td / tr);
-  cb::bench::report_ratios(state, ratios);
+  ratio_to_run(state, draw_all, last_seed(cb::ensemble_first_breaks(ensemble_of(beta))), beta);
 }
 
 }  // namespace
