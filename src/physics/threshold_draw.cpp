@@ -2,8 +2,10 @@
 #include "physics/threshold_draw.h"
 
 #include <algorithm>
-#include <cmath>
+#include <cmath>  // sqrt, abs: correctly rounded, exact
 #include <numbers>
+
+#include "physics/portable_math.h"
 
 namespace cb {
 
@@ -19,7 +21,7 @@ std::uint64_t mix(std::uint64_t z) {
 
 // Phi(x), the standard normal CDF.
 double normal_cdf(double x) {
-  return 0.5 * std::erfc(-x / std::sqrt(2.0));
+  return 0.5 * portable::erfc(-x / std::sqrt(2.0));
 }
 
 }  // namespace
@@ -33,18 +35,26 @@ double uniform_open01(std::uint64_t seed, std::uint64_t index) {
 }
 
 double weibull_quantile(double u, double shape) {
-  return std::pow(-std::log1p(-u), 1.0 / shape);
+  // e^(ln(l) / shape), l = -ln(1 - u), with ln l as a pair: for u near 2^-53 it is near -37,
+  // and its rounding alone would cost x a few ulps. t + rest = ln l / shape to ~2^-106.
+  // (rest is a correction below t's ulp: its own rounding, and 1 / shape's, do not show.)
+  const double inverse = 1.0 / shape;  // independent of u: off the chain of dependent steps
+  const portable::Pair ln = portable::log_pair(-portable::log1p(-u));
+  const double t = ln.hi / shape;
+  const portable::Pair back = portable::times(t, shape);  // t shape, exactly
+  const double rest = ((ln.hi - back.hi) - back.lo + ln.lo) * inverse;
+  return portable::exp_pair({t, rest});
 }
 
 double normal_quantile(double p) {
   // Symmetric: solve in the lower half, where p itself is represented most finely.
   if (p > 0.5) return -normal_quantile(1.0 - p);
   // A start within a few tenths everywhere: the tail's asymptote, or the linearised centre.
-  double x = p < 0.02
-                 ? -std::sqrt(-2.0 * std::log(p) - std::log(-4.0 * std::numbers::pi * std::log(p)))
-                 : (p - 0.5) * std::sqrt(2.0 * std::numbers::pi);
+  double x = p < 0.02 ? -std::sqrt(-2.0 * portable::log(p) -
+                                   portable::log(-4.0 * std::numbers::pi * portable::log(p)))
+                      : (p - 0.5) * std::sqrt(2.0 * std::numbers::pi);
   for (int i = 0; i < 60; ++i) {
-    const double density = std::exp(-0.5 * x * x) / std::sqrt(2.0 * std::numbers::pi);
+    const double density = portable::exp(-0.5 * x * x) / std::sqrt(2.0 * std::numbers::pi);
     const double residual = normal_cdf(x) - p;
     // Halley's step (Phi'' = -x Phi'): cubic convergence, safe from the starts above.
     const double newton = residual / density;

@@ -6,7 +6,8 @@
 // distributions differ between standard libraries, and a sequential engine ties spring j's
 // value to how many draws came before it. So each spring's uniform number is a hash of
 // (seed, spring) alone (a counter-based generator: SplitMix64's finaliser, applied twice), and
-// the inverse CDFs are written here.
+// the inverse CDFs are written here, on elementary functions of our own (portable_math.h):
+// libm's log, pow and erfc are the C library's, and glibc's even the CPU's.
 #pragma once
 
 #include <cstdint>

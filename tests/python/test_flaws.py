@@ -1,6 +1,7 @@
 # Issue #23 from Python: Result.thresholds is what `chainbreak run` lists in its JSON summary
 # (the same seed, the same drawn thresholds from the CLI and the module), and sweep over
 # chain.seed (one RK4 run for the seeds) gives each seed's first break as run() does, bit for bit.
+import decimal
 import json
 
 import numpy as np
@@ -38,9 +39,11 @@ def test_sweep_over_seeds_equals_run_seed_by_seed(scenes):
     assert len(drawn) == len(seeds)  # different seeds, different thresholds
 
 
-# The documented generator (src/scene/threshold_draw.cpp), written again here with Python's
+# The documented generator (src/physics/threshold_draw.cpp), written again here with Python's
 # integers masked to 64 bits: SplitMix64's finaliser keyed by (seed, spring), u in (0, 1), and
-# the Weibull quantile scale (-log(1 - u))^(1/m). An independent oracle for the module's draw.
+# the Weibull quantile scale (-log(1 - u))^(1/m), computed with 34 decimal digits (Python's
+# decimal: its ln and exp are correctly rounded) and rounded once to a double. An independent
+# oracle for the module's draw, which is its own arithmetic (src/physics/portable_math.h).
 MASK = (1 << 64) - 1
 
 
@@ -54,8 +57,11 @@ def _weibull_thresholds(seed, springs, scale, shape):
     out = []
     for j in range(1, springs + 1):
         bits = _mix(_mix((seed + 0x9E3779B97F4A7C15) & MASK) ^ ((j * 0xD1B54A32D192ED03) & MASK))
-        u = ((bits >> 11) + 0.5) * 2.0**-53
-        out.append(scale * (-np.log1p(-u)) ** (1.0 / shape))
+        u = decimal.Decimal(((bits >> 11) + 0.5) * 2.0**-53)  # the double's exact value
+        with decimal.localcontext() as exact:
+            exact.prec = 34
+            x = ((-(1 - u).ln()).ln() / decimal.Decimal(shape)).exp()
+        out.append(scale * float(x))
     return np.array(out)
 
 
@@ -76,8 +82,8 @@ def test_same_seed_same_thresholds_on_every_thread_count(scenes):
             runs.append(chainbreak.run(scene, every=100000, threads=threads))
         oracle = _weibull_thresholds(seed, beads, 1.0, 6.0)
         assert runs[0].thresholds == runs[1].thresholds
-        # To a few ulps: pow and log1p are libm's in the module and numpy's here.
-        np.testing.assert_allclose(runs[0].thresholds, oracle, rtol=4e-16, atol=0)
+        # Within an ulp of the exact quantile (measured: 0.74 x 2^-52 relative at worst).
+        np.testing.assert_allclose(runs[0].thresholds, oracle, rtol=2.5e-16, atol=0)
         assert runs[0].breaks == runs[1].breaks
     seeds = np.arange(1, 201)
     grids = [chainbreak.sweep(chainbreak.Scene.load(path), {"drive.beta": [0.02, 0.5], "chain.seed": seeds},
