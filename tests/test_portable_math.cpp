@@ -3,6 +3,7 @@
 // own), and frozen: the digest of 3 x 10^5 drawn thresholds is the same on every machine. ctest
 // also runs the digest with glibc's FMA and AVX2 code paths masked (tests/CMakeLists.txt,
 // thresholds_without_fma), where std::pow gave other thresholds (session 28).
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cfloat>
 #include <cmath>
@@ -11,11 +12,13 @@
 #include <cstring>
 #include <limits>
 #include <random>
+#include <vector>
 #if __has_include(<sys/platform/x86.h>)
 #include <sys/platform/x86.h>  // glibc >= 2.33: which CPU features its own code uses
 #endif
 
 #include "physics/portable_math.h"
+#include "physics/simd.h"
 #include "physics/threshold_draw.h"
 
 namespace {
@@ -108,6 +111,33 @@ TEST_CASE("portable math: the edges", "[flaws][portable]") {
   const cb::portable::Pair p = cb::portable::times(1.0 + 0x1p-30, 1.0 + 0x1p-30);
   CHECK(p.hi == 1.0 + 0x1p-29);
   CHECK(p.lo == 0x1p-60);  // the product's bits below double's, exactly
+}
+
+TEST_CASE("portable math: Weibull draws on AVX2 and AVX-512 lanes have the scalar bits",
+          "[flaws][portable][simd]") {
+  // 10^5 u of the generator and the extremes 2^-54 .. 1 - 2^-54, an odd count (a tail after
+  // the last full register); moduli whose exponent leaves the lanes' range (0.04: e^(ln l / m)
+  // near 10^-400 and 10^40) take the scalar ldexp in their lane.
+  std::vector<double> u;
+  for (std::uint64_t i = 1; i <= 100001; ++i) u.push_back(cb::uniform_open01(23, i));
+  for (int k = 0; k < 64; ++k)
+    u.push_back((k + 0.5) * 0x1p-53), u.push_back(1.0 - (k + 0.5) * 0x1p-53);
+  for (const double m : {6.0, 2.0, 0.5, 0.04, 50.0}) {
+    INFO("modulus " << m);
+    std::vector<double> scalar(u.size());
+    for (std::size_t i = 0; i < u.size(); ++i) scalar[i] = cb::weibull_quantile(u[i], m);
+    const auto same_bits = [&](void (*draw)(const double*, std::size_t, double, double*)) {
+      std::vector<double> lanes(u.size());
+      draw(u.data(), u.size(), m, lanes.data());
+      return std::memcmp(lanes.data(), scalar.data(), u.size() * sizeof(double)) == 0;
+    };
+    if (cb::simd_supported(cb::SimdPath::Avx2))
+      CHECK(same_bits(cb::detail::avx2::weibull_quantiles));
+    if (cb::simd_supported(cb::SimdPath::Avx512))
+      CHECK(same_bits(cb::detail::avx512::weibull_quantiles));
+    CHECK(same_bits(cb::weibull_quantiles));  // the process's path, in place of nothing
+    CHECK(std::none_of(scalar.begin(), scalar.end(), [](double x) { return !(x >= 0.0); }));
+  }
 }
 
 // 10^4 seeds x 30 springs, Weibull (m = 6) and truncated normal (relative spread 0.3): the

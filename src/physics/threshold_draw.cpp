@@ -1,15 +1,25 @@
 // Random thresholds by (seed, spring), with our own inverse CDFs (threshold_draw.h).
 #include "physics/threshold_draw.h"
 
-#include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>  // sqrt, abs: correctly rounded, exact
+#include <cstdint>
 #include <numbers>
 
 #include "physics/portable_math.h"
+#include "physics/simd.h"
+
+// See portable_math.cpp.
+#ifdef __clang__
+#pragma STDC FP_CONTRACT OFF
+#endif
 
 namespace cb {
 
 namespace {
+
+#include "physics/portable_lanes.inc"
 
 // SplitMix64's finaliser: a bijection of 64-bit words whose every output bit depends on every
 // input bit (Steele, Lea and Flood, "Fast splittable pseudorandom number generators", 2014).
@@ -35,15 +45,21 @@ double uniform_open01(std::uint64_t seed, std::uint64_t index) {
 }
 
 double weibull_quantile(double u, double shape) {
-  // e^(ln(l) / shape), l = -ln(1 - u), with ln l as a pair: for u near 2^-53 it is near -37,
-  // and its rounding alone would cost x a few ulps. t + rest = ln l / shape to ~2^-106.
-  // (rest is a correction below t's ulp: its own rounding, and 1 / shape's, do not show.)
-  const double inverse = 1.0 / shape;  // independent of u: off the chain of dependent steps
-  const portable::Pair ln = portable::log_pair(-portable::log1p(-u));
-  const double t = ln.hi / shape;
-  const portable::Pair back = portable::times(t, shape);  // t shape, exactly
-  const double rest = ((ln.hi - back.hi) - back.lo + ln.lo) * inverse;
-  return portable::exp_pair({t, rest});
+  double t = 0.0;
+  const auto parts = weibull_parts<double, std::uint64_t>(u, shape, 1.0 / shape, &t);
+  return scaled_anywhere(parts, exp_in_range(t));
+}
+
+void weibull_quantiles(const double* u, std::size_t n, double shape, double* out) {
+  switch (active_simd()) {
+    case SimdPath::Avx512:
+      return detail::avx512::weibull_quantiles(u, n, shape, out);
+    case SimdPath::Avx2:
+      return detail::avx2::weibull_quantiles(u, n, shape, out);
+    case SimdPath::Sse2:
+      break;
+  }
+  for (std::size_t i = 0; i < n; ++i) out[i] = weibull_quantile(u[i], shape);
 }
 
 double normal_quantile(double p) {
@@ -68,13 +84,17 @@ double normal_quantile(double p) {
 std::vector<double> draw_thresholds(ThresholdDist dist, double scale, double shape,
                                     std::uint64_t seed, int n) {
   std::vector<double> out(static_cast<std::size_t>(n));
+  if (dist == ThresholdDist::Weibull) {
+    for (int j = 1; j <= n; ++j) out[j - 1] = uniform_open01(seed, static_cast<std::uint64_t>(j));
+    weibull_quantiles(out.data(), out.size(), shape, out.data());
+    for (double& x : out) x *= scale;
+    return out;
+  }
   // Normal: z > -1/shape keeps 1 + shape z > 0; u is mapped into (Phi(-1/shape), 1).
-  const double cut = dist == ThresholdDist::Normal ? normal_cdf(-1.0 / shape) : 0.0;
+  const double cut = normal_cdf(-1.0 / shape);
   for (int j = 1; j <= n; ++j) {
     const double u = uniform_open01(seed, static_cast<std::uint64_t>(j));
-    out[j - 1] = dist == ThresholdDist::Weibull
-                     ? scale * weibull_quantile(u, shape)
-                     : scale * (1.0 + shape * normal_quantile(cut + u * (1.0 - cut)));
+    out[j - 1] = scale * (1.0 + shape * normal_quantile(cut + u * (1.0 - cut)));
   }
   return out;
 }

@@ -10,6 +10,7 @@
 // libm's log, pow and erfc are the C library's, and glibc's even the CPU's.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -27,6 +28,15 @@ double uniform_open01(std::uint64_t seed, std::uint64_t index);
 
 // Weibull of modulus `shape` and scale 1: F(x) = 1 - exp(-x^shape), x = (-ln(1 - u))^(1/shape).
 double weibull_quantile(double u, double shape);
+// The same for u[0 .. n) into out (which may be u), several at once on AVX2 and AVX-512
+// (threshold_draw_avx2.cpp, _avx512.cpp): each value's bits are weibull_quantile's.
+void weibull_quantiles(const double* u, std::size_t n, double shape, double* out);
+namespace detail::avx2 {
+void weibull_quantiles(const double* u, std::size_t n, double shape, double* out);
+}
+namespace detail::avx512 {
+void weibull_quantiles(const double* u, std::size_t n, double shape, double* out);
+}
 
 // The standard normal's inverse CDF, Phi^-1(p) for p in (0, 1), to a few ulps (Newton's
 // iteration on Phi(x) = erfc(-x / sqrt 2) / 2).

@@ -1,15 +1,16 @@
-// The page has no x86 kernels (rk4_*_avx2.cpp, *_avx512.cpp, lanes_*.cpp, crossing_*.cpp: x86
-// intrinsics and target pragmas), but the dispatch files that name them (rk4_tile.cpp,
-// rk4_chain.cpp (with rk4_segments.h), lanes.cpp, crossing.cpp) are the program's own. On
-// WebAssembly simd_supported() is true for the portable path only (physics/simd.cpp), so
-// active_simd() is SimdPath::Sse2 and these are never called: the page runs the generic kernel, the
-// one whose bits every x86 path reproduces. They trap if that ever changes rather than compute
-// anything.
+// The page has no x86 kernels (rk4_*_avx2.cpp, *_avx512.cpp, lanes_*.cpp, crossing_*.cpp,
+// threshold_draw_*.cpp: x86 intrinsics and target pragmas), but the dispatch files that name them
+// (rk4_tile.cpp, rk4_chain.cpp (with rk4_segments.h), lanes.cpp, crossing.cpp, threshold_draw.cpp)
+// are the program's own. On WebAssembly simd_supported() is true for the portable path only
+// (physics/simd.cpp), so active_simd() is SimdPath::Sse2 and these are never called: the page runs
+// the generic kernel, the one whose bits every x86 path reproduces. They trap if that ever changes
+// rather than compute anything.
 #include "physics/crossing.h"
 #include "physics/lanes_interval.h"
 #include "physics/rk4_chain.h"
 #include "physics/rk4_segments.h"
 #include "physics/rk4_tile.h"
+#include "physics/threshold_draw.h"
 
 namespace cb::detail {
 
@@ -41,6 +42,9 @@ namespace cb::detail {
     __builtin_trap();                                                     \
   }                                                                       \
   void finish_hermite_roots(HermiteRoot*, std::size_t) {                  \
+    __builtin_trap();                                                     \
+  }                                                                       \
+  void weibull_quantiles(const double*, std::size_t, double, double*) {   \
     __builtin_trap();                                                     \
   }                                                                       \
   }
