@@ -53,7 +53,7 @@ TEST_CASE("portable math: log, log1p, exp and erfc within a few ulps of the long
           "[flaws][portable]") {
   REQUIRE(LDBL_MANT_DIG >= 64);  // the reference needs 11 bits more than double
   constexpr int n = 200000;
-  // Measured (session 28): log 0.72, log1p 0.88, exp 0.70, erfc 2.3 (x eps).
+  // Measured (session 28): log 0.72, log1p 0.88, exp 0.70, erfc 1.9 (x eps).
   CHECK(worst([](double x) { return cb::portable::log(x); }, [](long double x) { return logl(x); },
               [](auto& r) {
                 return std::ldexp(uniform(r, 1.0, 2.0), static_cast<int>(r() % 2100) - 1070);
@@ -165,5 +165,5 @@ TEST_CASE("portable math: the drawn thresholds' digest is frozen", "[flaws][port
         std::memcpy(bytes, &t, sizeof t);
         for (const unsigned char b : bytes) digest = (digest ^ b) * 1099511628211ull;
       }
-  CHECK(digest == 0x27ccc2ef2764a137ull);
+  CHECK(digest == 0xa0351a6f7d9a28c5ull);
 }
