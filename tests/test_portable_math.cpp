@@ -14,7 +14,15 @@
 #include <random>
 #include <vector>
 #if __has_include(<sys/platform/x86.h>)
-#include <sys/platform/x86.h>  // glibc >= 2.33: which CPU features its own code uses
+// glibc >= 2.33: which CPU features its own code uses. The header is C: its _Bool is a GCC
+// extension in C++, which Clang (the sanitizer builds) does not take.
+#ifdef __clang__
+#define _Bool bool
+#endif
+#include <sys/platform/x86.h>
+#ifdef __clang__
+#undef _Bool
+#endif
 #endif
 
 #include "physics/portable_math.h"
