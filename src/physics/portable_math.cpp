@@ -38,6 +38,27 @@ constexpr std::array<double, 18> kErfTerms = [] {
   return c;
 }();
 
+// ln x as hi + lo, for x > 0 finite.
+Pair log_pair(double x) {
+  if (x >= 0x1p-1022) {
+    const LanePair<double> p = log_pair_of_normal<double, Bits>(x);
+    return {p.hi, p.lo};
+  }
+  // A subnormal x: ln(x 2^54) - 54 ln 2 (x 2^54 is exact and normal).
+  const LanePair<double> p = log_pair_of_normal<double, Bits>(x * 0x1p54);
+  const LanePair<double> q = two_sum(p.hi, -54.0 * kLn2Hi);
+  const LanePair<double> r = two_sum(q.hi, q.lo + (p.lo - 54.0 * kLn2Lo));
+  return {r.hi, r.lo};
+}
+
+// e^(hi + lo), |lo| small against hi's ulp.
+double exp_pair(Pair x) {
+  if (std::isnan(x.hi)) return x.hi;
+  if (x.hi > 709.8) return kInf;
+  if (x.hi < -745.2) return 0.0;
+  return scaled_anywhere(exp_parts<double, Bits>({x.hi, x.lo}), exp_in_range(x.hi));
+}
+
 // erfc x = e^(-x^2) / sqrt(pi) / (x + (1/2) / (x + 1 / (x + (3/2) / (x + ...)))) (Laplace's
 // continued fraction), `terms` partial numerators, evaluated from the tail: every quantity
 // positive, so each rounding stays a relative one.
@@ -98,18 +119,6 @@ Pair times(double a, double b) {
   return {p.hi, p.lo};
 }
 
-Pair log_pair(double x) {
-  if (x >= 0x1p-1022) {
-    const LanePair<double> p = log_pair_of_normal<double, Bits>(x);
-    return {p.hi, p.lo};
-  }
-  // A subnormal x: ln(x 2^54) - 54 ln 2 (x 2^54 is exact and normal).
-  const LanePair<double> p = log_pair_of_normal<double, Bits>(x * 0x1p54);
-  const LanePair<double> q = two_sum(p.hi, -54.0 * kLn2Hi);
-  const LanePair<double> r = two_sum(q.hi, q.lo + (p.lo - 54.0 * kLn2Lo));
-  return {r.hi, r.lo};
-}
-
 double log(double x) {
   if (std::isnan(x) || x < 0.0) return kNaN;
   if (x == 0.0) return -kInf;
@@ -123,13 +132,6 @@ double log1p(double x) {
   if (x == -1.0) return -kInf;
   if (x == kInf) return kInf;
   return log1p_of_finite<double, Bits>(x);
-}
-
-double exp_pair(Pair x) {
-  if (std::isnan(x.hi)) return x.hi;
-  if (x.hi > 709.8) return kInf;
-  if (x.hi < -745.2) return 0.0;
-  return scaled_anywhere(exp_parts<double, Bits>({x.hi, x.lo}), exp_in_range(x.hi));
 }
 
 double exp(double x) {

@@ -14,16 +14,14 @@
 namespace cb::portable {
 
 // a + b as an unevaluated pair hi + lo (|lo| <= ulp(hi) / 2): more than double precision
-// where a quantity's rounding would cost a caller accuracy (ln x near -37, -tau^2 near -700).
+// where a quantity's rounding would cost accuracy (ln x near -37, -x^2 near -700).
 struct Pair {
   double hi = 0.0, lo = 0.0;
 };
 
 double log(double x);            // ln x; -inf at 0, NaN below
-Pair log_pair(double x);         // ln x as hi + lo, for x > 0 finite
 double log1p(double x);          // ln(1 + x), accurate for small x; x > -1
 double exp(double x);            // e^x
-double exp_pair(Pair x);         // e^(hi + lo), |lo| small against hi's ulp
 Pair times(double a, double b);  // a b exactly (Dekker's product, no FMA)
 double erfc(double x);           // the complementary error function
 
