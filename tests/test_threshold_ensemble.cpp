@@ -254,3 +254,48 @@ TEST_CASE("the same seed gives the same thresholds and first breaks on 1 and 2 t
         line.substr(0, line.rfind(',')).substr(line.substr(0, line.rfind(',')).rfind(',') + 1));
   CHECK(springs.size() > 2);
 }
+
+TEST_CASE("an ensemble shared out on threads gives every member the same bits",
+          "[ensemble][flaws]") {
+  // 2 600 seeds (parts of at least kEnsembleMembersPerWorker): 1, 2 and 3 workers give the same
+  // ends, spring, tau and step bit for bit, and every 13th member is Integrator's alone. Each part
+  // runs its own copy of the shared chain and raises its own bounds, so a part that lost or
+  // mislaid members (the split's arithmetic) shows as a member whose end differs.
+  const int count = static_cast<int>(2 * cb::kEnsembleMembersPerWorker + 552);
+  cb::DriveDesc drive;
+  drive.type = cb::DriveType::Ramp;
+  drive.beta = 0.1;
+  const double dt = 0.01;
+  const auto last = std::llround(60.0 / dt);
+  cb::ThresholdEnsemble e;
+  e.chain = flawed(1, 6.0);
+  e.forcing = cb::make_forcing(drive);
+  e.dt = dt;
+  e.last_step = last;
+  for (int seed = 1; seed <= count; ++seed) {
+    const cb::ChainParams p = flawed(seed, 6.0);
+    e.thresholds.insert(e.thresholds.end(), p.thresholds.begin(), p.thresholds.end());
+  }
+  const std::vector<cb::LaneEnd> one = cb::ensemble_first_breaks(e, nullptr, 1);
+  REQUIRE(one.size() == static_cast<std::size_t>(count));
+  for (const int workers : {2, 3}) {
+    INFO("workers " << workers);
+    const std::vector<cb::LaneEnd> many = cb::ensemble_first_breaks(e, nullptr, workers);
+    REQUIRE(many.size() == one.size());
+    std::size_t same = 0;
+    for (std::size_t m = 0; m < one.size(); ++m)
+      same += many[m].kind == one[m].kind && many[m].first.spring == one[m].first.spring &&
+              std::memcmp(&many[m].first.tau, &one[m].first.tau, sizeof(double)) == 0 &&
+              many[m].first.step == one[m].first.step;
+    CHECK(same == one.size());
+  }
+  for (int m = 0; m < count; m += 13) {
+    INFO("seed " << m + 1);
+    const cb::LaneEnd a = alone(flawed(m + 1, 6.0), drive, dt, last);
+    const auto& end = one[static_cast<std::size_t>(m)];
+    REQUIRE(a.kind == cb::LaneEnd::Kind::Broke);
+    CHECK(end.kind == a.kind);
+    CHECK(end.first.spring == a.first.spring);
+    CHECK(end.first.tau == a.first.tau);
+  }
+}

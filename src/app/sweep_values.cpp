@@ -77,6 +77,10 @@ std::vector<std::vector<std::size_t>> ensembles_of(const std::vector<SceneDesc>&
 void run_ensembles(const std::vector<SceneDesc>& scenes,
                    const std::vector<std::vector<std::size_t>>& ensembles, int jobs,
                    const std::atomic<bool>* stop, std::vector<FirstBreak>& results) {
+  if (jobs <= 0) jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  // Fewer ensembles than threads (one beta): each shares its members out on the idle ones.
+  const int workers =
+      std::max(1, jobs / static_cast<int>(std::max<std::size_t>(1, ensembles.size())));
   std::atomic<std::size_t> next{0};
   std::exception_ptr failure;
   std::mutex failure_mutex;
@@ -98,7 +102,7 @@ void run_ensembles(const std::vector<SceneDesc>& scenes,
         e.thresholds.reserve(members.size() * static_cast<std::size_t>(n));
         for (std::size_t i : members)
           for (int j = 1; j <= n; ++j) e.thresholds.push_back(scenes[i].chain.threshold_of(j));
-        const std::vector<LaneEnd> ends = ensemble_first_breaks(e, stop);
+        const std::vector<LaneEnd> ends = ensemble_first_breaks(e, stop, workers);
         for (std::size_t k = 0; k < members.size(); ++k) {
           const std::size_t i = members[k];
           if (ends[k].kind == LaneEnd::Kind::Failed)
@@ -113,7 +117,6 @@ void run_ensembles(const std::vector<SceneDesc>& scenes,
       }
     }
   };
-  if (jobs <= 0) jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   std::vector<std::thread> pool;
   for (std::size_t t = 1;
        t < std::min<std::size_t>(static_cast<std::size_t>(jobs), ensembles.size()); ++t)

@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <numeric>
+#include <thread>
 #include <type_traits>
 
 #include "physics/coefficients.h"
@@ -51,16 +53,17 @@ class Ensemble {
   };
 
  public:
-  explicit Ensemble(const ThresholdEnsemble& e)
+  // Members [first, first + count) of `e`, numbered from 0 here.
+  Ensemble(const ThresholdEnsemble& e, std::size_t first, std::size_t count)
       : n_(e.chain.beads),
-        members_(static_cast<int>(e.thresholds.size() / static_cast<std::size_t>(e.chain.beads))),
+        members_(static_cast<int>(count)),
         stretch_(e.chain.break_on == BreakMode::Stretch),
-        phi_(e.thresholds),
+        phi_(e.thresholds.data() + first * static_cast<std::size_t>(e.chain.beads)),
         ends_(static_cast<std::size_t>(members_)),
         settled_(static_cast<std::size_t>(members_), false),
         seen_(static_cast<std::size_t>(members_), 0),
         buckets_(static_cast<std::size_t>(n_)) {
-    assert(e.thresholds.size() == static_cast<std::size_t>(members_) * n_);
+    assert((first + count) * static_cast<std::size_t>(n_) <= e.thresholds.size());
     // One pass in the members' order: each spring's smallest phi_c,j (the run's first bound),
     // the first member holding it, and its largest finite one (the buckets' range). 30
     // independent minima; one spring at a time they were a chain of dependent ones.
@@ -73,7 +76,7 @@ class Ensemble {
     double* __restrict hi = hi_.data();
     int* __restrict holder = holder_.data();
     for (int m = 0; m < members_; ++m) {
-      const double* __restrict row = phi_.data() + static_cast<std::size_t>(m) * n;
+      const double* __restrict row = phi_ + static_cast<std::size_t>(m) * n;
       for (std::size_t j = 0; j < n; ++j) {
         const double v = row[j];
         const bool lower = v < lo[j];
@@ -250,7 +253,7 @@ class Ensemble {
  private:
   int n_, members_;
   bool stretch_;
-  const std::vector<double>& phi_;
+  const double* phi_;          // member m's phi_c,j at m N + j - 1
   std::vector<LaneEnd> ends_;  // Reached until settled
   std::vector<bool> settled_;
   std::vector<std::uint64_t> seen_;
@@ -279,10 +282,12 @@ class Ensemble {
 
 }  // namespace
 
-std::vector<LaneEnd> ensemble_first_breaks(const ThresholdEnsemble& e,
-                                           const std::atomic<bool>* stop) {
-  assert(e.chain.beads >= 1 && !e.chain.pull_string);
-  Ensemble ensemble(e);
+namespace {
+
+// Members [first, first + count) of `e`: their ends, from one run.
+std::vector<LaneEnd> first_breaks_of_part(const ThresholdEnsemble& e, std::size_t first,
+                                          std::size_t count, const std::atomic<bool>* stop) {
+  Ensemble ensemble(e, first, count);
   if (ensemble.open() == 0) return ensemble.take();
   // One worker and no temporal blocks: `run`'s kernels for a chain this size (the same bits on
   // any path, integrator.h), with every crossing handed to watch().
@@ -307,6 +312,38 @@ std::vector<LaneEnd> ensemble_first_breaks(const ThresholdEnsemble& e,
     }
   }
   return ensemble.take();
+}
+
+}  // namespace
+
+std::vector<LaneEnd> ensemble_first_breaks(const ThresholdEnsemble& e,
+                                           const std::atomic<bool>* stop, int workers) {
+  assert(e.chain.beads >= 1 && !e.chain.pull_string);
+  const std::size_t members = e.thresholds.size() / static_cast<std::size_t>(e.chain.beads);
+  const std::size_t parts = std::clamp<std::size_t>(
+      std::min(static_cast<std::size_t>(std::max(workers, 1)), members / kEnsembleMembersPerWorker),
+      1, std::max<std::size_t>(members, 1));
+  if (parts == 1) return first_breaks_of_part(e, 0, members, stop);
+  std::vector<std::vector<LaneEnd>> ends(parts);
+  std::vector<std::exception_ptr> errors(parts);
+  const auto part = [&](std::size_t k) {
+    const std::size_t first = members * k / parts, last = members * (k + 1) / parts;
+    try {
+      ends[k] = first_breaks_of_part(e, first, last - first, stop);
+    } catch (...) {
+      errors[k] = std::current_exception();
+    }
+  };
+  std::vector<std::thread> pool;
+  for (std::size_t k = 1; k < parts; ++k) pool.emplace_back(part, k);
+  part(0);
+  for (auto& t : pool) t.join();
+  for (const auto& error : errors)
+    if (error) std::rethrow_exception(error);
+  std::vector<LaneEnd> all;
+  all.reserve(members);
+  for (auto& v : ends) all.insert(all.end(), v.begin(), v.end());
+  return all;
 }
 
 }  // namespace cb

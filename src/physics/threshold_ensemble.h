@@ -21,6 +21,7 @@
 #pragma once
 
 #include <atomic>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -49,7 +50,14 @@ bool ensemble_can_run(const ChainParams& member);
 // shared state stopped being finite before it broke (rerun it alone for Integrator's message).
 // When *stop becomes true the members not yet settled are returned as Reached: the caller checks
 // `stop`.
+//
+// With workers > 1 the members are shared out in contiguous parts (at least
+// kEnsembleMembersPerWorker each), one thread a part, each with its own run of the shared chain:
+// the runs are the same run, so each member's end is the same bits however many parts there are;
+// a sweep over one beta then keeps every core busy (the members' tests cost several runs).
+inline constexpr std::size_t kEnsembleMembersPerWorker = 1024;
 std::vector<LaneEnd> ensemble_first_breaks(const ThresholdEnsemble& ensemble,
-                                           const std::atomic<bool>* stop = nullptr);
+                                           const std::atomic<bool>* stop = nullptr,
+                                           int workers = 1);
 
 }  // namespace cb

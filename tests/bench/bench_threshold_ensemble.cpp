@@ -116,6 +116,17 @@ void BM_EnsemblePaired(benchmark::State& state) {
       last_seed(cb::ensemble_first_breaks(e)), beta);
 }
 
+// The same on two threads (ensemble_first_breaks' workers: two parts of 5 000 seeds, each with
+// its own run), as a sweep over one beta runs it with its default --jobs on two cores; `ratio`
+// is still against one run on one thread.
+void BM_EnsemblePaired2(benchmark::State& state) {
+  const double beta = state.range(0) / 1000.0;
+  const cb::ThresholdEnsemble e = ensemble_of(beta);
+  ratio_to_run(
+      state, [&] { benchmark::DoNotOptimize(cb::ensemble_first_breaks(e, nullptr, 2)); },
+      last_seed(cb::ensemble_first_breaks(e)), beta);
+}
+
 // A floor under any ensemble whose seeds keep `run`'s break times bit for bit: each seed's time
 // is `run`'s root of a Hermite cubic (crossing.h: hermite_root, then the bisection of
 // finish_hermite_roots, ~54 dependent steps, batched as the ensemble batches them), and those
@@ -192,6 +203,7 @@ BENCHMARK(BM_Ensemble10k)->Apply(betas);
 BENCHMARK(BM_OneRunSeed1)->Apply(betas);
 BENCHMARK(BM_OneRunLastSeed)->Apply(betas);
 BENCHMARK(BM_EnsemblePaired)->Apply(betas)->UseManualTime();
+BENCHMARK(BM_EnsemblePaired2)->Apply(betas)->UseManualTime();
 BENCHMARK(BM_RootsFloorPaired)->Apply(betas)->UseManualTime();
 BENCHMARK(BM_ReadFloorPaired)->Apply(betas)->UseManualTime();
 BENCHMARK(BM_DrawPaired)->Apply(betas)->UseManualTime();
