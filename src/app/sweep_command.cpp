@@ -119,8 +119,6 @@ int sweep_command(const SweepOptions& o) {
   for (std::size_t i = 0; i < results.size(); ++i)
     append_row(text, grid, grid.point(range.first + i), results[i]);
   out.write(text);
-  out.commit();
-  // The record last: its presence says the CSV is complete (resubmission and merge rely on it).
   ShardRecord record = sweep_record(o, grid);
   record.shard = shard;
   record.points = range;
@@ -128,10 +126,13 @@ int sweep_command(const SweepOptions& o) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   record.peak_memory_kib = peak_memory_kib();
   record.host = host_name();
-  // The HDF5 table before the record, which says the sweep's files are complete.
-  if (!o.h5.empty()) write_h5_sweep(o.h5, grid, range, results, record);
   out_record.write(record_json(record));
-  out_record.commit();
+  // Both made durable at once, then published in order: the CSV, the HDF5 table, and the record
+  // last: its presence says the sweep's files are complete (resubmission and merge rely on it).
+  flush_together({&out, &out_record});
+  out.publish();
+  if (!o.h5.empty()) write_h5_sweep(o.h5, grid, range, results, record);
+  out_record.publish();
   if (!o.quiet)
     std::fprintf(stderr, "sweep: %zu points written to %s\n", results.size(), o.csv.c_str());
   return 0;

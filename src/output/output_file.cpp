@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <thread>
 
 namespace cb {
 
@@ -64,21 +65,38 @@ void OutputFile::write(std::string_view text) {
   if (std::fwrite(text.data(), 1, text.size(), file_) != text.size()) failed_ = true;
 }
 
-void OutputFile::commit() {
-  if (!file_) return;
+void OutputFile::flush() {
+  if (!file_ || flushed_) return;
   const int err_before = failed_ ? errno : 0;
-  const bool flushed = !failed_ && std::fflush(file_) == 0 && ::fsync(::fileno(file_)) == 0;
-  const int err = flushed ? 0 : (err_before ? err_before : errno);
+  flushed_ = !failed_ && std::fflush(file_) == 0 && ::fsync(::fileno(file_)) == 0;
+  if (!flushed_) flush_error_ = err_before ? err_before : errno;
+}
+
+void OutputFile::publish() {
+  if (!file_) return;
+  flush();
   std::fclose(file_);
   file_ = nullptr;
-  if (!flushed)
+  if (!flushed_)
     throw OutputError(
-        path_ + ": writing failed (" + reason(err) +
+        path_ + ": writing failed (" + reason(flush_error_) +
         "); nothing was written under that name. Free some space or choose another directory");
   if (std::rename(temp_.c_str(), path_.c_str()) != 0)
     throw OutputError(path_ + ": cannot rename the finished file into place (" + reason(errno) +
                       ")");
   temp_.clear();
+}
+
+void OutputFile::commit() {
+  flush();
+  publish();
+}
+
+void flush_together(const std::vector<OutputFile*>& files) {
+  std::vector<std::thread> pool;
+  for (std::size_t k = 1; k < files.size(); ++k) pool.emplace_back([f = files[k]] { f->flush(); });
+  if (!files.empty()) files.front()->flush();
+  for (auto& t : pool) t.join();
 }
 
 }  // namespace cb

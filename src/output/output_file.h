@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace cb {
 
@@ -32,12 +33,21 @@ class OutputFile {
 
   void write(std::string_view text);
   void commit();  // flush, close, rename; throws OutputError (e.g. disk full)
+  // commit() in two parts: flush() makes the text durable (fsync; a failure is kept for
+  // publish), publish() closes and renames, after flush() if it was not called.
+  void flush();
+  void publish();
   const std::string& path() const { return path_; }
 
  private:
   std::string path_, temp_;
   std::FILE* file_ = nullptr;
-  bool failed_ = false;
+  bool failed_ = false, flushed_ = false;
+  int flush_error_ = 0;
 };
+
+// flush() of each file at once, one thread a file: each fsync waits for the disk (~10 ms here),
+// and a sweep writes a CSV and its record. Publish them after, in the order they must appear.
+void flush_together(const std::vector<OutputFile*>& files);
 
 }  // namespace cb
