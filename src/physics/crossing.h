@@ -58,8 +58,12 @@ struct HermiteRoot {
 HermiteRoot hermite_root(double p0, double p1, double m0, double m1, double h, double upper,
                          double lower);
 void finish_hermite_roots(HermiteRoot* roots, std::size_t count);
-// The same for the AVX2 and AVX-512 paths (crossing_avx2.cpp, crossing_avx512.cpp), which
-// finish_hermite_roots picks by active_simd().
+// The same for the x86-64 baseline (crossing.cpp), the AVX2 and the AVX-512 paths
+// (crossing_avx2.cpp, crossing_avx512.cpp), which finish_hermite_roots picks by active_simd()
+// (one root alone: the baseline's narrower group); each path's bits are the others'.
+namespace sse2 {
+void finish_hermite_roots(HermiteRoot* roots, std::size_t count);
+}
 namespace avx2 {
 void finish_hermite_roots(HermiteRoot* roots, std::size_t count);
 }
