@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <type_traits>
 
 #include "physics/coefficients.h"
 #include "physics/simd.h"
@@ -65,7 +67,7 @@ HermiteRoot hermite_root(double p0, double p1, double m0, double m1, double h, d
 
 namespace sse2 {
 void finish_hermite_roots(HermiteRoot* roots, std::size_t count) {
-  finish_roots<2, 4>(roots, count);
+  finish_roots<2, 8>(roots, count);
 }
 }  // namespace sse2
 
