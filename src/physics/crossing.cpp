@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <type_traits>
 
 #include "physics/coefficients.h"
 #include "physics/simd.h"
@@ -63,6 +65,12 @@ HermiteRoot hermite_root(double p0, double p1, double m0, double m1, double h, d
 
 #include "physics/crossing_bisect.inc"
 
+namespace sse2 {
+void finish_hermite_roots(HermiteRoot* roots, std::size_t count) {
+  finish_roots<2, 8>(roots, count);
+}
+}  // namespace sse2
+
 // One root (Integrator's break) in a group of four, which the baseline does in two registers: a
 // wider group would only add idle lanes to its one chain. Many (an ensemble's) in the widest
 // groups the CPU runs (crossing_avx2.cpp, crossing_avx512.cpp); the same bits either way.
@@ -76,7 +84,7 @@ void finish_hermite_roots(HermiteRoot* roots, std::size_t count) {
     case SimdPath::Sse2:
       break;
   }
-  finish_roots<2, 4>(roots, count);
+  sse2::finish_hermite_roots(roots, count);
 }
 
 int earliest_crossing(const std::vector<Candidate>& candidates, const ChainCoefficients& coef,

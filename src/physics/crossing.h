@@ -37,8 +37,8 @@ struct Candidate {
 // The search in two parts, for callers with many (an ensemble settles up to 10^4 members'
 // crossings, threshold_ensemble.cpp): hermite_root() finds whether and in which bracket the
 // cubic first reaches a bound (cheap), finish_hermite_roots() bisects the brackets of many such
-// roots together, a group of SIMD lanes at a time (crossing_bisect.inc: 32 on AVX-512, 16 on
-// AVX2, 8 on SSE2): each is the one bisection, step for step, and independent of the others,
+// roots together, a group of SIMD lanes at a time (crossing_bisect.inc: 64 on AVX-512, 32 on
+// AVX2, 16 on SSE2): each is the one bisection, step for step, and independent of the others,
 // so their chains of dependent operations overlap in the core.
 struct HermiteRoot {
   double a = 0.0, b = 0.0, q = 0.0, d = 0.0;  // p(s) = a + b s + q s^2 + d s^3, s = theta / h
@@ -58,8 +58,12 @@ struct HermiteRoot {
 HermiteRoot hermite_root(double p0, double p1, double m0, double m1, double h, double upper,
                          double lower);
 void finish_hermite_roots(HermiteRoot* roots, std::size_t count);
-// The same for the AVX2 and AVX-512 paths (crossing_avx2.cpp, crossing_avx512.cpp), which
-// finish_hermite_roots picks by active_simd().
+// The same for the x86-64 baseline (crossing.cpp), the AVX2 and the AVX-512 paths
+// (crossing_avx2.cpp, crossing_avx512.cpp), which finish_hermite_roots picks by active_simd()
+// (one root alone: the baseline's narrower group); each path's bits are the others'.
+namespace sse2 {
+void finish_hermite_roots(HermiteRoot* roots, std::size_t count);
+}
 namespace avx2 {
 void finish_hermite_roots(HermiteRoot* roots, std::size_t count);
 }

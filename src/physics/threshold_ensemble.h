@@ -16,7 +16,7 @@
 // member's, so a slow pull's steps stop holding candidates for members already broken. A
 // spring's buckets are built when the run first needs them (a jerk needs 2 of 30). A member
 // settles as soon as it is known to cross; its crossing time is bisected later with 255 others
-// (crossing.h, finish_hermite_roots: 32 at a time on AVX-512). 10^4 seeds of a slow pull cost
+// (crossing.h, finish_hermite_roots: 64 at a time on AVX-512). 10^4 seeds of a slow pull cost
 // ~1.7 x one run, a jerk's ~36 x (each seed's own bit-exact crossing time; tests/bench/README.md).
 #pragma once
 
