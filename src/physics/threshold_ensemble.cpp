@@ -94,6 +94,8 @@ class Ensemble {
     }
     bound_ = lo_;
     open_ = members_;
+    listed_.resize(static_cast<std::size_t>(members_));
+    std::iota(listed_.begin(), listed_.end(), 0);
   }
 
   double phi(int member, int spring) const {
@@ -208,27 +210,30 @@ class Ensemble {
     const auto i = static_cast<std::size_t>(j - 1);
     Buckets& b = buckets_[i];
     if (!b.start.empty()) return b;
-    // Only the open members: a slow pull builds its last springs' buckets when most have
-    // settled (10^4 seeds at beta = 0.02: 2 x 10^5 of the 3 x 10^5 thresholds are open then).
-    const auto members = static_cast<std::size_t>(members_), n = static_cast<std::size_t>(n_);
-    const auto buckets = static_cast<std::size_t>(std::max(open_, 1));
+    // Only the open members (a list with few settled ones: a branch on each member's settled
+    // bit cost more than it saved): a slow pull builds its last springs' buckets when most have
+    // settled (10^4 seeds at beta = 0.02: 1.9 x 10^5 of the 3 x 10^5 thresholds are open then).
+    const auto open = static_cast<std::size_t>(open_);
+    if (listed_.size() > open + open / 8 + 64)
+      std::erase_if(listed_, [&](int m) { return settled_[static_cast<std::size_t>(m)]; });
+    const auto n = static_cast<std::size_t>(n_);
+    const std::size_t count = listed_.size(), buckets = std::max<std::size_t>(count, 1);
     b.lo = lo_[i];
     b.scale = hi_[i] > lo_[i] ? static_cast<double>(buckets) / (hi_[i] - lo_[i]) : 0.0;
     b.count = buckets;
     b.start.assign(buckets + 1, 0);
-    slot_.resize(members);
-    for (std::size_t m = 0; m < members; ++m) {
-      if (settled_[m]) continue;
-      slot_[m] = static_cast<int>(b.of(phi_[m * n + i]));
-      ++b.start[static_cast<std::size_t>(slot_[m]) + 1];
+    slot_.resize(count);
+    for (std::size_t k = 0; k < count; ++k) {
+      const auto m = static_cast<std::size_t>(listed_[k]);
+      slot_[k] = static_cast<int>(b.of(phi_[m * n + i]));
+      ++b.start[static_cast<std::size_t>(slot_[k]) + 1];
     }
     for (std::size_t k = 0; k < buckets; ++k) b.start[k + 1] += b.start[k];
-    b.members.resize(static_cast<std::size_t>(b.start[buckets]));
+    b.members.resize(count);
     b.end.assign(b.start.begin(), b.start.end() - 1);  // each bucket filled from its start
-    for (std::size_t m = 0; m < members; ++m)
-      if (!settled_[m])
-        b.members[static_cast<std::size_t>(b.end[static_cast<std::size_t>(slot_[m])]++)] =
-            static_cast<int>(m);
+    for (std::size_t k = 0; k < count; ++k)
+      b.members[static_cast<std::size_t>(b.end[static_cast<std::size_t>(slot_[k])]++)] =
+          listed_[k];
     return b;
   }
 
@@ -280,7 +285,8 @@ class Ensemble {
   std::vector<std::uint64_t> seen_;
   std::uint64_t visit_ = 0;
   std::vector<Buckets> buckets_;  // built by buckets_of, empty until then
-  std::vector<int> slot_;         // buckets_of's: each member's bucket of the spring at hand
+  std::vector<int> slot_;    // buckets_of's: each listed member's bucket of the spring at hand
+  std::vector<int> listed_;  // the open members and a few settled since (buckets_of)
   std::vector<double> lo_, hi_;   // spring j's smallest and largest finite phi_c,j, at j - 1
   std::vector<double> bound_;     // spring j's bound in the run, at j - 1 (raise_bound) ...
   std::vector<int> holder_;       // ... and the member that holds it (-1: none is open)
