@@ -224,6 +224,8 @@ class Ensemble {
     b.start.assign(buckets + 1, 0);
     slot_.resize(count);
     for (std::size_t k = 0; k < count; ++k) {
+      if (k + 16 < count)
+        __builtin_prefetch(phi_ + static_cast<std::size_t>(listed_[k + 16]) * n + i);
       const auto m = static_cast<std::size_t>(listed_[k]);
       slot_[k] = static_cast<int>(b.of(phi_[m * n + i]));
       ++b.start[static_cast<std::size_t>(slot_[k]) + 1];
@@ -232,8 +234,7 @@ class Ensemble {
     b.members.resize(count);
     b.end.assign(b.start.begin(), b.start.end() - 1);  // each bucket filled from its start
     for (std::size_t k = 0; k < count; ++k)
-      b.members[static_cast<std::size_t>(b.end[static_cast<std::size_t>(slot_[k])]++)] =
-          listed_[k];
+      b.members[static_cast<std::size_t>(b.end[static_cast<std::size_t>(slot_[k])]++)] = listed_[k];
     return b;
   }
 
@@ -285,8 +286,8 @@ class Ensemble {
   std::vector<std::uint64_t> seen_;
   std::uint64_t visit_ = 0;
   std::vector<Buckets> buckets_;  // built by buckets_of, empty until then
-  std::vector<int> slot_;    // buckets_of's: each listed member's bucket of the spring at hand
-  std::vector<int> listed_;  // the open members and a few settled since (buckets_of)
+  std::vector<int> slot_;         // buckets_of's: each listed member's bucket of the spring at hand
+  std::vector<int> listed_;       // the open members and a few settled since (buckets_of)
   std::vector<double> lo_, hi_;   // spring j's smallest and largest finite phi_c,j, at j - 1
   std::vector<double> bound_;     // spring j's bound in the run, at j - 1 (raise_bound) ...
   std::vector<int> holder_;       // ... and the member that holds it (-1: none is open)
