@@ -14,10 +14,12 @@
 // about to break. A bound that a member no longer needs rises (Integrator::widen_bounds): once
 // the member holding spring j's loosest bound has settled, the run's bound becomes the next open
 // member's, so a slow pull's steps stop holding candidates for members already broken. A
-// spring's buckets are built when the run first needs them (a jerk needs 2 of 30). A member
-// settles as soon as it is known to cross; its crossing time is bisected later with 255 others
-// (crossing.h, finish_hermite_roots: 64 at a time on AVX-512). 10^4 seeds of a slow pull cost
-// ~1.7 x one run, a jerk's ~36 x (each seed's own bit-exact crossing time; tests/bench/README.md).
+// spring's buckets are built when the run first needs them (a jerk needs 2 of 30), over the
+// members still open then. A member settles as soon as it is known to cross; its crossing time
+// is bisected later with 255 others (crossing.h, finish_hermite_roots: 64 at a time on AVX-512).
+// 10^4 seeds cost ~1.75 x one run for a slow pull, 6.6 x at beta = 0.02 and ~32 x for a jerk on
+// one thread; 1.6, 4.0 and 20 x on two (each seed's own bit-exact crossing time;
+// tests/bench/README.md, session 29).
 #pragma once
 
 #include <atomic>
