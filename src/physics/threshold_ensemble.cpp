@@ -47,11 +47,11 @@ class Ensemble {
     // passed each settled member again at every later step of the spring.
     std::vector<int> start, end;
     std::vector<int> members;
-    // Without branches (the counting sort calls it 10^4 times a spring): x is NaN only for
-    // v = +inf with scale 0, whose bucket is the last one, as every +inf's.
     void take_out(std::size_t k, int e) {
       members[static_cast<std::size_t>(e)] = members[static_cast<std::size_t>(--end[k])];
     }
+    // Without branches (the counting sort calls it 10^4 times a spring): x is NaN only for
+    // v = +inf with scale 0, whose bucket is the last one, as every +inf's.
     std::size_t of(double v) const {
       const double x = (v - lo) * scale, top = static_cast<double>(count - 1);
       const double clamped = x < top ? (x > 0.0 ? x : 0.0) : top;
