@@ -88,8 +88,7 @@ void OutputFile::publish() {
 }
 
 void OutputFile::commit() {
-  flush();
-  publish();
+  publish();  // which flushes first
 }
 
 void flush_together(const std::vector<OutputFile*>& files) {

@@ -8,13 +8,13 @@
 #include <exception>
 #include <limits>
 #include <numeric>
-#include <thread>
 #include <type_traits>
 
 #include "physics/coefficients.h"
 #include "physics/crossing.h"
 #include "physics/integrator.h"
 #include "physics/stop_flag.h"
+#include "physics/worker_pool.h"
 
 namespace cb {
 
@@ -362,10 +362,9 @@ std::vector<LaneEnd> ensemble_first_breaks(const ThresholdEnsemble& e,
       errors[k] = std::current_exception();
     }
   };
-  std::vector<std::thread> pool;
-  for (std::size_t k = 1; k < parts; ++k) pool.emplace_back(part, k);
-  part(0);
-  for (auto& t : pool) t.join();
+  detail::WorkerPool(static_cast<int>(parts)).run([&](int k) {
+    part(static_cast<std::size_t>(k));
+  });
   for (const auto& error : errors)
     if (error) std::rethrow_exception(error);
   std::vector<LaneEnd> all;
