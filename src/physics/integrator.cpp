@@ -292,7 +292,7 @@ int Integrator::step_up_to(std::int64_t max_steps) {
     if (taken >= 0) return taken;
   }
   const int count = static_cast<int>(std::min<std::int64_t>(im.block_steps, max_steps));
-  if (count >= 2 && state_.step >= im.no_block_before && error_.empty()) {
+  if (count >= 2 && !tap_ && state_.step >= im.no_block_before && error_.empty()) {
     im.plain.resize(count);
     int plain = 0;
     while (plain < count &&
@@ -420,8 +420,8 @@ int Integrator::plain_steps(int max_steps, Kernel kernel) {
     if (books.candidates) {
       // A step that may break a spring ends a run, settled in advance_interval's own code from
       // this output: end_run() leaves the state at its start in state_ and the output in
-      // im.psi_next, im.vel_next, as after a run's first step (no second kernel call; a watched
-      // ensemble has such a step in every ten, issue #23). The run holds no step after a break.
+      // im.psi_next, im.vel_next, as after a run's first step (no second kernel call). The run
+      // holds no step after a break.
       const int before = k > 0 ? end_run() : 0;
       f_end = in.force[2];
       learn_end(t1);
@@ -433,6 +433,7 @@ int Integrator::plain_steps(int max_steps, Kernel kernel) {
       return before + 1;
     }
     // commit(t1) and step()'s count.
+    if (tap_) tap_(step + 1, t0, t1, x, v, x_next, v_next);
     std::swap(x, x_next);
     std::swap(v, v_next);
     dissipated += books.dissipated;
@@ -583,18 +584,10 @@ bool Integrator::advance_interval(double ta, double tb, bool end_is_breakpoint) 
 // The rest of advance_interval once the outputs hold a finite rk4(ta, tb, end_is_breakpoint):
 // commit it, or integrate to the earliest crossing, break that spring and redo the rest.
 bool Integrator::settle_interval(double ta, double tb, bool end_is_breakpoint) {
-  if (watch_) {
-    // Watched, not broken (watch_crossings()): each worker's candidates in
-    // worker order, as one list.
-    const auto& outs = impl_->outputs;
-    if (outs.size() == 1) {
-      if (!outs[0].candidates.empty()) watch_(outs[0].candidates, ta, tb);
-    } else {
-      std::vector<detail::Candidate> all;
-      for (const auto& out : outs)
-        all.insert(all.end(), out.candidates.begin(), out.candidates.end());
-      if (!all.empty()) watch_(all, ta, tb);
-    }
+  if (tap_) {
+    // Tapped, not broken (tap_intervals()): handed whole, then committed.
+    tap_(state_.step + 1, ta, tb, state_.psi.data(), state_.vel.data(), impl_->psi_next.data(),
+         impl_->vel_next.data());
     commit(tb);
     return true;
   }
@@ -640,14 +633,6 @@ bool Integrator::settle_interval(double ta, double tb, bool end_is_breakpoint) {
       return false;
     }
   }
-}
-
-void Integrator::widen_bounds(int spring, double upper, double lower) {
-  assert(watch_ && coef_.per_bead && spring >= 1 && spring <= params_.beads);
-  const auto j = static_cast<std::size_t>(spring - 1);
-  assert(upper >= coef_.upper[j] && lower <= coef_.lower[j]);
-  coef_.upper[j] = upper;
-  coef_.lower[j] = lower;
 }
 
 void Integrator::break_spring(int spring, double tau) {

@@ -138,18 +138,15 @@ class Integrator {
   // Continues from integrated_state() and cursor() as saved.
   void restore(const ChainState& integrated, const Cursor& cursor);
 
-  // Ensembles over thresholds (physics/threshold_ensemble.h): once set, no spring breaks; each
-  // interval [ta, tb] whose springs may reach their bounds (the chain's own: the loosest of the
-  // ensemble) hands its candidates here, then is committed whole. Before an ensemble member's
-  // first break its trajectory is this run's, bit for bit. Not for a chain with a pull string.
-  using CrossingWatch =
-      std::function<void(const std::vector<detail::Candidate>&, double ta, double tb)>;
-  void watch_crossings(CrossingWatch watch) { watch_ = std::move(watch); }
-  // A watched run's bounds of `spring` (1..N) move outward as the ensemble's members settle
-  // (upper up, lower down; the PerBead policy only): the kernels then collect fewer candidates,
-  // and none that a member whose bounds lie outside these could trip (stencil.inc's tests are
-  // monotone in the bounds). Read by the next step's kernel.
-  void widen_bounds(int spring, double upper, double lower);
+  // Ensembles over thresholds (physics/threshold_ensemble.h): once set, no spring breaks and
+  // every interval [ta, tb] of step `step` (1, 2, ...; a step split at a kick or a kink is
+  // several) is handed here as it is committed whole, with the state at both its ends as the
+  // kernels hold it (integrated_state()'s psi and vel). Before an ensemble member's first break
+  // its trajectory is this run's, bit for bit. Steps go one at a time (no temporal blocks).
+  using IntervalTap =
+      std::function<void(std::int64_t step, double ta, double tb, const double* psi0,
+                         const double* vel0, const double* psi1, const double* vel1)>;
+  void tap_intervals(IntervalTap tap) { tap_ = std::move(tap); }
 
  private:
   struct Impl;
@@ -160,7 +157,7 @@ class Integrator {
   ChainState state_;
   std::string error_;
   std::unique_ptr<Impl> impl_;
-  CrossingWatch watch_;  // watch_crossings(); empty: springs break
+  IntervalTap tap_;  // tap_intervals(); empty: springs break
 
   // A hanging chain of linear springs: psi_eq, phi_eq (index j - 1), and the last state()
   // reported (psi, not u) with the step, tau and break count it was made at.

@@ -3,10 +3,13 @@
 #include <immintrin.h>  // stencil.inc's fmadd
 
 #include <algorithm>
+#include <bit>
 #include <cassert>
 #include <cmath>
+#include <cstring>
 #include <exception>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <type_traits>
 
@@ -37,147 +40,349 @@ bool ensemble_can_share(const ChainParams& a, const ChainParams& b) {
 
 namespace {
 
-class Ensemble {
-  // One spring's members bucketed by phi_c,j (a counting sort).
-  struct Buckets {
-    double lo = 0.0, scale = 0.0;
-    std::size_t count = 0, first = 0;  // first: no bucket before it holds an open member
-    // Bucket k: members[start[k] .. end[k]), end[k] <= start[k + 1]. A member found settled
-    // there is taken out (the bucket's last moved into its place): the walks of a slow pull
-    // passed each settled member again at every later step of the spring.
-    std::vector<int> start, end;
-    std::vector<int> members;
-    void take_out(std::size_t k, int e) {
-      members[static_cast<std::size_t>(e)] = members[static_cast<std::size_t>(--end[k])];
-    }
-    // Without branches (the counting sort calls it 10^4 times a spring): x is NaN only for
-    // v = +inf with scale 0, whose bucket is the last one, as every +inf's.
-    std::size_t of(double v) const {
-      const double x = (v - lo) * scale, top = static_cast<double>(count - 1);
-      const double clamped = x < top ? (x > 0.0 ? x : 0.0) : top;
-      return static_cast<std::size_t>(static_cast<int>(clamped));
-    }
+// The shared run's intervals on their way from the integrator to the members' tests, which
+// take them in windows (Ensemble::take): a ring of length() intervals, each with the state at its
+// end and, where it does not start from the last one's end (a kick), at its start.
+class IntervalRing {
+ public:
+  // 512 intervals for a chain of up to 128 beads (a window of up to 256 keeps the passes over the
+  // open members few), fewer for a longer one (the ring and the tests' arrays hold ~2^16 values
+  // of each kind), at least 16.
+  explicit IntervalRing(int beads)
+      : n_(static_cast<std::size_t>(beads)),
+        length_(std::clamp<std::int64_t>(std::int64_t{1} << 16 >> std::bit_width(n_ - 1), 16, 512)),
+        meta_(static_cast<std::size_t>(length_)),
+        // Not value-initialised: only the slots written are touched.
+        ends_(new double[static_cast<std::size_t>(length_) * 2 * n_]),
+        starts_(new double[static_cast<std::size_t>(length_) * 2 * n_]) {}
+
+  std::int64_t length() const { return length_; }
+
+  struct Ends {
+    const double *psi0, *vel0, *psi1, *vel1;
+  };
+  struct Meta {
+    std::int64_t step;
+    double ta, tb;
+    bool joined;  // starts where interval i - 1 ends (its state at both ends held once)
   };
 
+  // Whether interval produced() may be written: the tests still need those from `released` on
+  // (the last they took, where the next starts), and take fewer than length() at a time.
+  bool has_room() const { return produced_ - released_ < length_; }
+  void put(std::int64_t step, double ta, double tb, const double* psi0, const double* vel0,
+           const double* psi1, const double* vel1) {
+    const std::int64_t i = produced_++;
+    const std::size_t bytes = n_ * sizeof(double);
+    const bool joined = i > 0 && std::memcmp(psi0, end_psi(i - 1), bytes) == 0 &&
+                        std::memcmp(vel0, end_psi(i - 1) + n_, bytes) == 0;
+    meta_[slot(i)] = {step, ta, tb, joined};
+    std::memcpy(ends_.get() + slot(i) * 2 * n_, psi1, bytes);
+    std::memcpy(ends_.get() + slot(i) * 2 * n_ + n_, vel1, bytes);
+    if (!joined) {
+      std::memcpy(starts_.get() + slot(i) * 2 * n_, psi0, bytes);
+      std::memcpy(starts_.get() + slot(i) * 2 * n_ + n_, vel0, bytes);
+    }
+  }
+  std::int64_t produced() const { return produced_; }
+  void release(std::int64_t before) { released_ = before; }
+
+  const Meta& meta(std::int64_t i) const { return meta_[slot(i)]; }
+  Ends ends(std::int64_t i) const {
+    const double* start = meta(i).joined ? end_psi(i - 1) : starts_.get() + slot(i) * 2 * n_;
+    const double* end = end_psi(i);
+    return {start, start + n_, end, end + n_};
+  }
+  // length() is a power of two.
+  std::size_t slot(std::int64_t i) const { return static_cast<std::size_t>(i & (length_ - 1)); }
+
+ private:
+  const double* end_psi(std::int64_t i) const { return ends_.get() + slot(i) * 2 * n_; }
+
+  std::size_t n_;
+  std::int64_t length_;
+  std::vector<Meta> meta_;
+  std::unique_ptr<double[]> ends_, starts_;  // psi then vel of slot k at 2 N k
+  std::int64_t produced_ = 0, released_ = -1;
+};
+
+// Spring j's phi, dphi/dtau at both ends of an interval, as the kernels form them (rk4_chain's
+// collect, rk4_tile's bound: psi_j - psi_{j-1}, psi_0 = 0).
+struct SpringEnds {
+  double p0, p1, m0, m1;
+};
+SpringEnds spring_ends(const IntervalRing::Ends& e, std::size_t i) {
+  const double xl = i > 0 ? e.psi0[i - 1] : 0.0, vl = i > 0 ? e.vel0[i - 1] : 0.0;
+  const double nl = i > 0 ? e.psi1[i - 1] : 0.0, wl = i > 0 ? e.vel1[i - 1] : 0.0;
+  return {e.psi0[i] - xl, e.psi1[i] - nl, e.vel0[i] - vl, e.vel1[i] - wl};
+}
+
+// Spring j's reach in an interval (stencil.inc's bound): no phi_c,j above it can be crossed
+// there, on either side (may_cross_between's sums are at most this one: rounding is monotone).
+double reach_of(double p0, double p1, double m0, double m1, double slack) {
+  return std::max(std::abs(p0), std::abs(p1)) + slack * (detail::sabs(m0) + detail::sabs(m1));
+}
+
+// The first index of w[0, n) (non-decreasing, w[n - 1] >= x) holding at least x: the number
+// below x, counted first among every 16th entry (coarse[b] = w[16 b + 15]), then in one block
+// of 16. Counts vectorise; a binary search's chain of dependent loads cost a member ~40 ns.
+std::size_t first_at_least(const double* w, std::size_t stride, const double* coarse, std::size_t n,
+                           double x) {
+  std::size_t block = 0;
+  for (std::size_t b = 0; b < n / 16; ++b) block += static_cast<std::size_t>(coarse[b] < x);
+  const std::size_t first = 16 * block, last = std::min(n, first + 16);
+  std::size_t below = 0;
+  for (std::size_t k = first; k < last; ++k) below += static_cast<std::size_t>(w[k * stride] < x);
+  return first + below;
+}
+
+// A threshold or reach as a 15-bit level, monotone in it: x <= y gives level(x) <= level(y), so
+// a member none of whose levels reaches its spring's level cannot reach its bound. The level is
+// the exponent and first 11 bits of the mantissa of x as a float (rounding is monotone), from
+// 2^-8 times `base` up, clamped. A member's levels go in words of 32 (64 bytes: one cache line
+// where 30 thresholds fill four).
+using Level = std::int16_t;
+inline constexpr std::size_t kWord = 32;
+inline constexpr Level kTopLevel = 32767;
+std::int32_t level_base(double scale) {
+  return (std::bit_cast<std::int32_t>(static_cast<float>(scale)) >> 12) - (8 << 11);
+}
+// x >= 0 (+0 for a reach at rest); +inf and NaN come out at the top.
+Level level_of(double x, std::int32_t base) {
+  const std::int32_t bits = std::bit_cast<std::int32_t>(static_cast<float>(x)) >> 12;
+  return static_cast<Level>(std::clamp(bits - base, 0, std::int32_t{kTopLevel}));
+}
+// Bit j set where level[j] <= top[j], for a word of levels.
+std::uint32_t at_or_below(const Level* level, const Level* top) {
+#if defined(__SSE2__)
+  // Four compares of eight levels, packed to bytes, their signs gathered.
+  __m128i above[4];
+  for (int q = 0; q < 4; ++q)
+    above[q] = _mm_cmpgt_epi16(_mm_loadu_si128(reinterpret_cast<const __m128i*>(level + 8 * q)),
+                               _mm_loadu_si128(reinterpret_cast<const __m128i*>(top + 8 * q)));
+  const auto low =
+      static_cast<std::uint32_t>(_mm_movemask_epi8(_mm_packs_epi16(above[0], above[1])));
+  const auto high =
+      static_cast<std::uint32_t>(_mm_movemask_epi8(_mm_packs_epi16(above[2], above[3])));
+  return ~(low | high << 16);
+#else
+  std::uint32_t below = 0;
+  for (std::size_t j = 0; j < kWord; ++j)
+    below |= static_cast<std::uint32_t>(level[j] <= top[j]) << j;
+  return below;
+#endif
+}
+static_assert(kWord == 32);
+
+// Members join the tests (Ensemble::take) by the lowest of their levels in each group of kGroup
+// springs: a member none of whose levels in a group reaches the group's highest reach's level is
+// near no bound there. A slow pull stretches every spring alike, a faster one the pulled end
+// first: each group's order follows its own springs. The members in order of each group's key
+// (that level >> kKeyShift: 16 levels a bucket, whose members join together), one counting sort
+// a group.
+inline constexpr std::size_t kGroup = 8;
+inline constexpr std::size_t kMaxGroups = 64;  // a longer chain's groups are longer
+inline constexpr int kKeyShift = 4;
+inline constexpr std::size_t kKeys = (std::size_t{kTopLevel} >> kKeyShift) + 1;
+
+class Ensemble {
  public:
   // Members [first, first + count) of `e`, numbered from 0 here.
-  Ensemble(const ThresholdEnsemble& e, std::size_t first, std::size_t count)
-      : n_(e.chain.beads),
-        members_(static_cast<int>(count)),
+  Ensemble(const ThresholdEnsemble& e, std::size_t first, std::size_t count,
+           const IntervalRing& ring)
+      : n_(static_cast<std::size_t>(e.chain.beads)),
+        words_((n_ + kWord - 1) / kWord),
+        group_(std::max(kGroup, (n_ + kMaxGroups - 1) / kMaxGroups)),
+        groups_((n_ + group_ - 1) / group_),
         stretch_(e.chain.break_on == BreakMode::Stretch),
-        phi_(e.thresholds.data() + first * static_cast<std::size_t>(e.chain.beads)),
-        ends_(static_cast<std::size_t>(members_)),
-        settled_(static_cast<std::size_t>(members_), false),
-        seen_(static_cast<std::size_t>(members_), 0),
-        buckets_(static_cast<std::size_t>(n_)) {
-    assert((first + count) * static_cast<std::size_t>(n_) <= e.thresholds.size());
-    // One pass in the members' order: each spring's smallest phi_c,j (the run's first bound),
-    // the first member holding it, and its largest finite one (the buckets' range). 30
-    // independent minima; one spring at a time they were a chain of dependent ones.
-    const auto n = static_cast<std::size_t>(n_);
-    lo_.assign(n, std::numeric_limits<double>::infinity());
-    hi_.assign(n, 0.0);
-    holder_.assign(n, -1);
-    // Separate arrays (restrict), so that the row's 30 springs are one vectorised loop.
-    double* __restrict lo = lo_.data();
-    double* __restrict hi = hi_.data();
-    int* __restrict holder = holder_.data();
-    for (int m = 0; m < members_; ++m) {
-      const double* __restrict row = phi_ + static_cast<std::size_t>(m) * n;
-      for (std::size_t j = 0; j < n; ++j) {
-        const double v = row[j];
-        const bool lower = v < lo[j];
-        lo[j] = lower ? v : lo[j];
-        holder[j] = lower ? m : holder[j];
-        hi[j] = v < std::numeric_limits<double>::infinity() && v > hi[j] ? v : hi[j];
+        ring_(ring),
+        length_(static_cast<std::size_t>(ring.length())),
+        phi_(e.thresholds.data() + first * n_),
+        ends_(count),
+        joined_(count, 0),
+        by_key_(groups_ * count),
+        key_(groups_ * count),
+        next_(groups_, 0),
+        reach_(length_ * n_),
+        rising_(length_ * n_),
+        coarse_(length_ / 16 * n_),
+        top_(n_),
+        base_(level_base(e.chain.threshold)),
+        levels_(count * words_ * kWord),
+        top_levels_(words_ * kWord) {
+    // Each member's levels and each group's lowest, then the members in order of it.
+    std::vector<int> keys(groups_ * count), start(groups_ * kKeys, 0);
+    for (std::size_t m = 0; m < count; ++m) {
+      const double* __restrict row = phi_ + m * n_;
+      Level* __restrict level = levels_.data() + m * words_ * kWord;
+      for (std::size_t j = 0; j < n_; ++j) level[j] = level_of(row[j], base_);
+      for (std::size_t j = n_; j < words_ * kWord; ++j) level[j] = kTopLevel;  // above any reach's
+      for (std::size_t g = 0; g < groups_; ++g) {
+        const Level lowest =
+            *std::min_element(level + g * group_, level + std::min(n_, g * group_ + group_));
+        keys[g * count + m] = lowest >> kKeyShift;
+        ++start[g * kKeys + static_cast<std::size_t>(lowest >> kKeyShift)];
       }
     }
-    bound_ = lo_;
-    open_ = members_;
-    listed_.resize(static_cast<std::size_t>(members_));
-    std::iota(listed_.begin(), listed_.end(), 0);
-  }
-
-  double phi(int member, int spring) const {
-    return phi_[static_cast<std::size_t>(member) * n_ + static_cast<std::size_t>(spring - 1)];
-  }
-  // The loosest bounds of the ensemble: spring j's smallest phi_c,j.
-  ChainParams loosest(const ChainParams& shared) const {
-    ChainParams p = shared;
-    p.thresholds.assign(static_cast<std::size_t>(n_), std::numeric_limits<double>::infinity());
-    for (int j = 1; j <= n_; ++j)
-      p.thresholds[static_cast<std::size_t>(j - 1)] = bound_[static_cast<std::size_t>(j - 1)];
-    p.threshold = *std::min_element(p.thresholds.begin(), p.thresholds.end());
-    p.normalize();
-    return p;
-  }
-
-  // One interval's candidates (Integrator::watch_crossings): the members that may break in it.
-  void watch(const std::vector<detail::Candidate>& candidates, double ta, double tb,
-             std::int64_t step) {
-    const double slack = detail::hermite_slack(tb - ta);
-    ++visit_;
-    touched_.clear();
-    for (const detail::Candidate& c : candidates) {
-      // A bound whose member has settled rises here, where it is needed: raising every spring's
-      // bound at each settle cost a fast pull (springs the wave never reaches) a fifth more.
-      const int holder = holder_[static_cast<std::size_t>(c.spring - 1)];
-      if (holder >= 0 && settled_[static_cast<std::size_t>(holder)]) raise_bound(c.spring);
-      // A member trips spring j (stencil.inc's may_cross_between with (phi_c, -phi_c) or
-      // (phi_c, -inf)) only if phi_c <= max(|p0|, |p1|) + s: each side's sum is at most this one
-      // (rounding is monotone), so the walk below misses no member the bound would test.
-      const double s = slack * (detail::sabs(c.m0) + detail::sabs(c.m1));
-      const double reach = std::max(std::abs(c.p0), std::abs(c.p1)) + s;
-      Buckets& b = buckets_of(c.spring);
-      const std::size_t last = b.of(reach);
-      for (std::size_t k = b.first; k <= last && k < b.count; ++k) {
-        for (int e = b.start[k]; e < b.end[k];) {
-          const int member = b.members[static_cast<std::size_t>(e)];
-          const auto m = static_cast<std::size_t>(member);
-          if (settled_[m]) {
-            b.take_out(k, e);
-            continue;
-          }
-          ++e;
-          if (seen_[m] == visit_ || phi(member, c.spring) > reach) continue;
-          seen_[m] = visit_;
-          touched_.push_back(member);
-        }
+    for (std::size_t g = 0; g < groups_; ++g) {
+      int* at = start.data() + g * kKeys;
+      std::exclusive_scan(at, at + kKeys, at, 0);
+      for (std::size_t m = 0; m < count; ++m) {
+        const int key = keys[g * count + m];
+        const std::size_t k = g * count + static_cast<std::size_t>(at[key]++);
+        by_key_[k] = static_cast<int>(m);
+        key_[k] = key;
       }
     }
-    for (const int m : touched_) settle(m, candidates, slack, ta, tb, step);
+    unsettled_ = count;
+  }
+
+  std::size_t open() const { return unsettled_; }
+  std::int64_t taken() const { return taken_; }
+
+  // The intervals the run has handed since the last call, [taken(), upto): each spring's reach
+  // in each (stencil.inc's bound: no member whose phi_c,j lies above it can cross there) and
+  // its running largest; then every open member that some spring's largest reaches is tested
+  // interval by interval, as Integrator would test it alone.
+  void take(std::int64_t upto) {
+    const std::int64_t from = taken_;
+    const auto count = static_cast<std::size_t>(upto - from);
+    if (count == 0) return;
+    assert(count < length_);
+    std::fill(top_.begin(), top_.end(), -std::numeric_limits<double>::infinity());
+    double* __restrict top = top_.data();
+    for (std::size_t k = 0; k < count; ++k) {
+      const std::int64_t i = from + static_cast<std::int64_t>(k);
+      const IntervalRing::Ends e = ring_.ends(i);
+      const IntervalRing::Meta& t = ring_.meta(i);
+      const double slack = detail::hermite_slack(t.tb - t.ta);
+      double* __restrict reach = reach_.data() + ring_.slot(i) * n_;
+      double* __restrict rising = rising_.data() + k * n_;
+      // Spring 1 (psi_0 = 0), then springs 2..N in one loop without a branch (it vectorises).
+      reach[0] = reach_of(e.psi0[0], e.psi1[0], e.vel0[0], e.vel1[0], slack);
+      for (std::size_t j = 1; j < n_; ++j)
+        reach[j] = reach_of(e.psi0[j] - e.psi0[j - 1], e.psi1[j] - e.psi1[j - 1],
+                            e.vel0[j] - e.vel0[j - 1], e.vel1[j] - e.vel1[j - 1], slack);
+      for (std::size_t j = 0; j < n_; ++j) {
+        top[j] = std::max(top[j], reach[j]);
+        rising[j] = top[j];
+      }
+      if (k % 16 == 15)
+        for (std::size_t j = 0; j < n_; ++j) coarse_[j * (length_ / 16) + k / 16] = top[j];
+    }
+    taken_ = upto;
+    // The members whose lowest level in a group the group's highest reach's has passed join.
+    for (std::size_t j = 0; j < n_; ++j) top_levels_[j] = level_of(top_[j], base_);
+    const std::size_t members = ends_.size();
+    for (std::size_t g = 0; g < groups_; ++g) {
+      const auto highest = *std::max_element(
+          top_levels_.begin() + static_cast<std::ptrdiff_t>(g * group_),
+          top_levels_.begin() + static_cast<std::ptrdiff_t>(std::min(n_, g * group_ + group_)));
+      const int reached = highest >> kKeyShift;
+      std::size_t& next = next_[g];
+      for (; next < members && key_[g * members + next] <= reached; ++next) {
+        const int m = by_key_[g * members + next];
+        if (joined_[static_cast<std::size_t>(m)] != kWaiting) continue;
+        joined_[static_cast<std::size_t>(m)] = kOpen;
+        open_.push_back(m);
+      }
+    }
+    // The open members near a bound (a level of theirs at or below their spring's: near_springs_,
+    // words_ a member); the others stay open as they are.
+    near_.clear();
+    near_springs_.clear();
+    std::size_t kept = 0;
+    for (const int m : open_) {
+      const Level* level = levels_.data() + static_cast<std::size_t>(m) * words_ * kWord;
+      std::uint32_t any = 0;
+      for (std::size_t w = 0; w < words_; ++w) {
+        near_springs_.push_back(at_or_below(level + w * kWord, top_levels_.data() + w * kWord));
+        any |= near_springs_.back();
+      }
+      if (any != 0) {
+        near_.push_back(m);
+      } else {
+        near_springs_.resize(near_springs_.size() - words_);
+        open_[kept++] = m;
+      }
+    }
+    open_.resize(kept);
+    for (std::size_t k = 0; k < near_.size(); ++k) {
+      if (k + 4 < near_.size()) prefetch_row(near_[k + 4]);
+      if (settle(near_[k], near_springs_.data() + k * words_, from, count)) {
+        joined_[static_cast<std::size_t>(near_[k])] = kSettled;
+        --unsettled_;
+      } else
+        open_.push_back(near_[k]);
+    }
     if (roots_.size() >= kFinishAt) finish();
   }
 
-  // The springs whose bound rose since the last call, each with its new bound (the smallest
-  // phi_c,j of the members still open), handed to `widen(spring, upper)` once.
-  template <class Widen>
-  void take_widened(Widen&& widen) {
-    for (const int j : widened_) widen(j, bound_[static_cast<std::size_t>(j - 1)]);
-    widened_.clear();
+  void end_open(LaneEnd::Kind kind) {
+    for (std::size_t m = 0; m < ends_.size(); ++m)
+      if (joined_[m] != kSettled) ends_[m].kind = kind;
+  }
+  std::vector<LaneEnd> take_ends() {
+    finish();
+    return std::move(ends_);
   }
 
-  // A member's own candidates (the kernel's bound with its bounds), then Integrator's search
-  // (crossing.h's earliest_crossing_within) in two parts: whether the member crosses in this
-  // interval is known at once, and it settles; its crossing times are bisected later with many
-  // other members' (finish), a group of lanes at a time, which a slow pull, one member a step,
-  // could not do otherwise. The same roots and the same earliest rule, so the same spring and tau.
-  void settle(int m, const std::vector<detail::Candidate>& candidates, double slack, double ta,
-              double tb, std::int64_t step) {
-    Pending pending{m, ta, tb, step, roots_.size()};
-    for (const detail::Candidate& c : candidates) {
-      const double upper = phi(m, c.spring), lower = lower_bound_of(upper, stretch_);
-      if (!detail::may_cross_between(c.p0, c.p1, c.m0, c.m1, slack, upper, lower)) continue;
-      const detail::HermiteRoot root =
-          detail::hermite_root(c.p0, c.p1, c.m0, c.m1, tb - ta, upper, lower);
-      if (!root.crosses()) continue;
-      roots_.push_back(root);
-      root_springs_.push_back(c.spring);
+ private:
+  // Member m's thresholds into the cache a few members ahead (each row its own lines; the
+  // list's gaps defeat the hardware's stride prefetch).
+  void prefetch_row(int m) const {
+    const double* row = phi_ + static_cast<std::size_t>(m) * n_;
+    for (std::size_t b = 0; b < n_ * sizeof(double); b += 64) __builtin_prefetch(row + b / 8);
+    __builtin_prefetch(row + n_ - 1);
+  }
+
+  // Member m's first crossing in intervals [from, from + count), which some spring's largest
+  // reach there lets it have: from the first interval where one of its springs' reach gets to
+  // its phi_c,j, Integrator's tests (the kernel's bound with the member's bounds, then
+  // hermite_root) interval by interval. Whether it crosses is known at once, and it settles;
+  // its crossing times are bisected later with many other members' (finish), a group of lanes
+  // at a time. The same roots and the same earliest rule, so the same spring and tau.
+  bool settle(int m, const std::uint32_t* springs, std::int64_t from, std::size_t count) {
+    const double* __restrict row = phi_ + static_cast<std::size_t>(m) * n_;
+    // Of the springs its levels say may be near (bit j of word w: spring 32 w + j + 1), those
+    // whose largest reach gets to the member's bound, and the first interval where one's reach
+    // does: each spring's first searched only below the earliest found so far (a jerk's window
+    // has many springs whose largest reach passes the member's bound, most of them late).
+    near_here_.clear();
+    std::size_t k = count;
+    for (std::size_t w = 0; w < words_; ++w)
+      for (std::uint32_t left = springs[w]; left != 0; left &= left - 1) {
+        const std::size_t j = w * kWord + static_cast<std::size_t>(std::countr_zero(left));
+        if (!(row[j] <= top_[j])) continue;
+        near_here_.push_back(j);
+        if (k == count || rising_[(k - 1) * n_ + j] >= row[j])
+          k = first_at_least(rising_.data() + j, n_, coarse_.data() + j * (length_ / 16), k,
+                             row[j]);
+      }
+    for (; k < count; ++k) {
+      const std::int64_t i = from + static_cast<std::int64_t>(k);
+      const double* __restrict reach = reach_.data() + ring_.slot(i) * n_;
+      const IntervalRing::Meta& t = ring_.meta(i);
+      const double h = t.tb - t.ta;
+      const std::size_t first_root = roots_.size();
+      for (const std::size_t j : near_here_) {
+        if (!(row[j] <= reach[j])) continue;
+        const double upper = row[j], lower = lower_bound_of(upper, stretch_);
+        const SpringEnds s = spring_ends(ring_.ends(i), j);
+        if (!detail::may_cross_between(s.p0, s.p1, s.m0, s.m1, detail::hermite_slack(h), upper,
+                                       lower))
+          continue;
+        const detail::HermiteRoot root =
+            detail::hermite_root(s.p0, s.p1, s.m0, s.m1, h, upper, lower);
+        if (!root.crosses()) continue;
+        roots_.push_back(root);
+        root_springs_.push_back(static_cast<int>(j) + 1);
+      }
+      if (roots_.size() == first_root) continue;
+      pending_.push_back({m, t.ta, t.tb, t.step, first_root});
+      return true;
     }
-    if (roots_.size() == pending.first_root) return;
-    pending_.push_back(pending);
-    settled_[static_cast<std::size_t>(m)] = true;
-    --open_;
+    return false;
   }
 
   // The settled members' crossing times: their roots bisected together, then each member's
@@ -200,99 +405,32 @@ class Ensemble {
     root_springs_.clear();
   }
 
-  // Spring j's members in buckets by phi_c,j (a counting sort: one linear pass, where sorting
-  // 30 x 10^4 keys cost 30 ms against a run's 0.4 ms), built when the run first needs them: a
-  // jerk's members all break before its wave has brought more than a few springs near their
-  // bounds (2 of 30 at beta = 1), and the buckets of the others were most of its cost. Bucket k
-  // holds lo + [k, k+1) / scale; the index is monotone in phi_c,j, so every member with
-  // phi_c,j <= reach lies in a bucket up to of(reach).
-  Buckets& buckets_of(int j) {
-    const auto i = static_cast<std::size_t>(j - 1);
-    Buckets& b = buckets_[i];
-    if (!b.start.empty()) return b;
-    // Only the open members (a list with few settled ones: a branch on each member's settled
-    // bit cost more than it saved): a slow pull builds its last springs' buckets when most have
-    // settled (10^4 seeds at beta = 0.02: 1.9 x 10^5 of the 3 x 10^5 thresholds are open then).
-    const auto open = static_cast<std::size_t>(open_);
-    if (listed_.size() > open + open / 8 + 64)
-      std::erase_if(listed_, [&](int m) { return settled_[static_cast<std::size_t>(m)]; });
-    const auto n = static_cast<std::size_t>(n_);
-    const std::size_t count = listed_.size(), buckets = std::max<std::size_t>(count, 1);
-    b.lo = lo_[i];
-    b.scale = hi_[i] > lo_[i] ? static_cast<double>(buckets) / (hi_[i] - lo_[i]) : 0.0;
-    b.count = buckets;
-    b.start.assign(buckets + 1, 0);
-    slot_.resize(count);
-    for (std::size_t k = 0; k < count; ++k) {
-      if (k + 16 < count)
-        __builtin_prefetch(phi_ + static_cast<std::size_t>(listed_[k + 16]) * n + i);
-      const auto m = static_cast<std::size_t>(listed_[k]);
-      slot_[k] = static_cast<int>(b.of(phi_[m * n + i]));
-      ++b.start[static_cast<std::size_t>(slot_[k]) + 1];
-    }
-    for (std::size_t k = 0; k < buckets; ++k) b.start[k + 1] += b.start[k];
-    b.members.resize(count);
-    b.end.assign(b.start.begin(), b.start.end() - 1);  // each bucket filled from its start
-    for (std::size_t k = 0; k < count; ++k)
-      b.members[static_cast<std::size_t>(b.end[static_cast<std::size_t>(slot_[k])]++)] = listed_[k];
-    return b;
-  }
-
-  // Spring j's bound in the run: the smallest phi_c,j of its open members (+inf when none is),
-  // and the member that holds it. Once that member has settled, the run's bound may rise to the
-  // next open member's: a slow pull's steps then stop holding candidates for members already
-  // broken (10^4 seeds: from every step after tau ~ 200 to about one step in ten).
-  void raise_bound(int j) {
-    const auto i = static_cast<std::size_t>(j - 1);
-    Buckets& b = buckets_of(j);
-    double lowest = std::numeric_limits<double>::infinity();
-    int holder = -1;
-    for (; b.first < b.count; ++b.first) {
-      for (int e = b.start[b.first]; e < b.end[b.first];) {
-        const int member = b.members[static_cast<std::size_t>(e)];
-        if (settled_[static_cast<std::size_t>(member)]) {
-          b.take_out(b.first, e);
-          continue;
-        }
-        ++e;
-        if (!(phi(member, j) < lowest)) continue;
-        lowest = phi(member, j);
-        holder = member;
-      }
-      if (holder >= 0) break;  // bucket b.first holds it
-    }
-    holder_[i] = holder;
-    if (lowest > bound_[i]) widened_.push_back(j);
-    bound_[i] = lowest;
-  }
-
-  int open() const { return open_; }
-  void fail_open() {
-    for (int m = 0; m < members_; ++m)
-      if (!settled_[static_cast<std::size_t>(m)])
-        ends_[static_cast<std::size_t>(m)].kind = LaneEnd::Kind::Failed;
-  }
-  std::vector<LaneEnd> take() {
-    finish();
-    return std::move(ends_);
-  }
-
- private:
-  int n_, members_;
+  std::size_t n_, words_, group_, groups_;  // springs, words of levels, springs a group, groups
   bool stretch_;
+  const IntervalRing& ring_;
+  std::size_t length_;         // the ring's
   const double* phi_;          // member m's phi_c,j at m N + j - 1
   std::vector<LaneEnd> ends_;  // Reached until settled
-  std::vector<bool> settled_;
-  std::vector<std::uint64_t> seen_;
-  std::uint64_t visit_ = 0;
-  std::vector<Buckets> buckets_;  // built by buckets_of, empty until then
-  std::vector<int> slot_;         // buckets_of's: each listed member's bucket of the spring at hand
-  std::vector<int> listed_;       // the open members and a few settled since (buckets_of)
-  std::vector<double> lo_, hi_;   // spring j's smallest and largest finite phi_c,j, at j - 1
-  std::vector<double> bound_;     // spring j's bound in the run, at j - 1 (raise_bound) ...
-  std::vector<int> holder_;       // ... and the member that holds it (-1: none is open)
-  std::vector<int> widened_;      // springs whose bound rose since take_widened
-  std::vector<int> touched_;
+  // Each member's state: waiting to join the tests, open in them (open_), settled.
+  enum : char { kWaiting, kOpen, kSettled };
+  std::vector<char> joined_;
+  // Group g's members in order of their key (by_key_, key_ at g members + k), of which the first
+  // next_[g] have joined.
+  std::vector<int> by_key_, key_;
+  std::vector<std::size_t> next_;
+  std::size_t unsettled_ = 0;
+  std::vector<int> open_;
+  std::vector<int> near_;                    // take()'s open members near a bound ...
+  std::vector<std::uint32_t> near_springs_;  // ... and their springs' bits, words_ a member
+  std::vector<std::size_t> near_here_;       // settle()'s springs (j - 1)
+  std::int64_t taken_ = 0;                   // the intervals before this one are taken
+  // Of the intervals taken last: spring j's reach in interval i at slot(i) N + j - 1, its
+  // largest up to the k-th of them at k N + j - 1 (non-decreasing in k; every 16th also at
+  // (j - 1) length_ / 16 + k / 16 in coarse_), and its largest over all of them at j - 1.
+  std::vector<double> reach_, rising_, coarse_, top_;
+  std::int32_t base_;              // level_of's
+  std::vector<Level> levels_;      // member m's levels of phi_c,j at m words_ kWord + j - 1
+  std::vector<Level> top_levels_;  // take()'s levels of top_, padded below any member's
   // Members settled whose crossing times are not bisected yet (finish), and their roots: member
   // k's are roots_[first_root of k .. first_root of k + 1).
   struct Pending {
@@ -305,41 +443,57 @@ class Ensemble {
   std::vector<Pending> pending_;
   std::vector<detail::HermiteRoot> roots_;
   std::vector<int> root_springs_;
-  int open_ = 0;
 };
 
-}  // namespace
-
-namespace {
-
-// Members [first, first + count) of `e`: their ends, from one run.
-std::vector<LaneEnd> first_breaks_of_part(const ThresholdEnsemble& e, std::size_t first,
-                                          std::size_t count, const std::atomic<bool>* stop) {
-  Ensemble ensemble(e, first, count);
-  if (ensemble.open() == 0) return ensemble.take();
+// The shared chain, run without breaks: its thresholds are the members'.
+Integrator shared_run(const ThresholdEnsemble& e) {
+  ChainParams p = e.chain;
+  p.thresholds.assign(static_cast<std::size_t>(p.beads), std::numeric_limits<double>::infinity());
+  p.threshold = std::numeric_limits<double>::infinity();
+  p.normalize();
   // One worker and no temporal blocks: `run`'s kernels for a chain this size (the same bits on
-  // any path, integrator.h), with every crossing handed to watch().
-  // The PerBead policy (the Uniform bits, integrator.h) even when the loosest bounds are all
-  // equal, so that each spring's bound can rise on its own.
+  // any path, integrator.h), one interval at a time.
   IntegratorOptions options{e.dt, 1};
   options.block_steps = 0;
-  options.per_bead_policy = true;
-  Integrator sim(ensemble.loosest(e.chain), e.forcing, options);
-  const bool stretch = e.chain.break_on == BreakMode::Stretch;
-  sim.watch_crossings([&](const std::vector<detail::Candidate>& candidates, double ta, double tb) {
-    ensemble.watch(candidates, ta, tb, sim.steps_done() + 1);
-    ensemble.take_widened([&](int spring, double upper) {
-      sim.widen_bounds(spring, upper, lower_bound_of(upper, stretch));
-    });
+  return Integrator(p, e.forcing, options);
+}
+
+// Members [first, first + count) of `e`: their ends, from one run whose intervals the tests
+// take every open() / 4 of them (a pass over the open members costs about as much as a few
+// steps a member): the tests then cost a fraction of the run, which ends within a few steps of
+// the last member's break.
+std::vector<LaneEnd> first_breaks_of_part(const ThresholdEnsemble& e, std::size_t first,
+                                          std::size_t count, const std::atomic<bool>* stop) {
+  IntervalRing ring(e.chain.beads);
+  Ensemble tests(e, first, count, ring);
+  if (tests.open() == 0) return tests.take_ends();
+  Integrator sim = shared_run(e);
+  // The tests take every interval handed so far; the ring keeps the last one's end (where the
+  // next starts).
+  const auto take = [&] {
+    tests.take(ring.produced());
+    ring.release(ring.produced() - 1);
+  };
+  sim.tap_intervals([&](std::int64_t step, double ta, double tb, const double* psi0,
+                        const double* vel0, const double* psi1, const double* vel1) {
+    if (!ring.has_room()) take();
+    ring.put(step, ta, tb, psi0, vel0, psi1, vel1);
   });
-  while (ensemble.open() > 0 && sim.steps_done() < e.last_step) {
-    if (stop_requested(stop)) break;
-    if (sim.step_up_to(e.last_step - sim.steps_done()) == 0) {
-      ensemble.fail_open();
+  bool failed = false;
+  while (tests.open() > 0 && sim.steps_done() < e.last_step && !stop_requested(stop)) {
+    const std::int64_t due = std::clamp<std::int64_t>(static_cast<std::int64_t>(tests.open() / 4),
+                                                      16, ring.length() / 2);
+    const std::int64_t waiting = ring.produced() - tests.taken();
+    if (waiting >= due) {
+      take();
+    } else if (sim.step_up_to(std::min(e.last_step - sim.steps_done(), due - waiting)) == 0) {
+      failed = true;
       break;
     }
   }
-  return ensemble.take();
+  take();
+  tests.end_open(failed ? LaneEnd::Kind::Failed : LaneEnd::Kind::Reached);
+  return tests.take_ends();
 }
 
 }  // namespace

@@ -3,23 +3,25 @@
 //
 // Design note: before its first break a chain's trajectory does not depend on its thresholds;
 // they only decide when a spring is tested (the crossing bound) and whether it crosses (the
-// Hermite rule). So one run with each spring's bounds set to the loosest of the ensemble (the
-// smallest phi_c,j) collects every step's candidates for every member, and never breaks
-// (Integrator::watch_crossings). At each such step the members whose phi_c,j lies below a
-// candidate's bound are tested as `run` would test them: the same bound (stencil.inc), the same
-// earliest-crossing search (crossing.h), their own bounds. Each member's spring, tau and step are
-// then Integrator's on that member alone, bit for bit (tests/test_threshold_ensemble.cpp). The
-// exact solver shares one run across thresholds the same way (exact/first_break.cpp).
-// Per spring the members are kept in buckets by phi_c,j, so a step touches only the members
-// about to break. A bound that a member no longer needs rises (Integrator::widen_bounds): once
-// the member holding spring j's loosest bound has settled, the run's bound becomes the next open
-// member's, so a slow pull's steps stop holding candidates for members already broken. A
-// spring's buckets are built when the run first needs them (a jerk needs 2 of 30), over the
-// members still open then. A member settles as soon as it is known to cross; its crossing time
-// is bisected later with 255 others (crossing.h, finish_hermite_roots: 64 at a time on AVX-512).
-// 10^4 seeds cost ~1.75 x one run for a slow pull, 6.6 x at beta = 0.02 and ~32 x for a jerk on
-// one thread; 1.6, 4.0 and 20 x on two (each seed's own bit-exact crossing time;
-// tests/bench/README.md, session 29).
+// Hermite rule). So one run that never breaks hands every interval it integrates, the state at
+// both ends (Integrator::tap_intervals), to the members' tests, which take them in windows: per
+// window each spring's reach (stencil.inc's bound) and its running largest; a member near a
+// bound, some spring's largest reach at or above its phi_c,j, is then tested interval by
+// interval from the first where a reach gets there, as `run` would test it: the same bound with
+// its own thresholds, the same earliest-crossing search (crossing.h). Each member's spring, tau
+// and step are then Integrator's on that member alone, bit for bit
+// (tests/test_threshold_ensemble.cpp). The exact solver shares one run across thresholds the
+// same way (exact/first_break.cpp).
+// Which members are near is asked of 15-bit levels of their thresholds (monotone in them, one cache
+// line a member), and only of those that have joined the tests: a member joins once, in some group
+// of 8 springs, its lowest level is passed by the group's highest reach's (the members in order of
+// it, per group). A window so costs its near members, not all 10^4. A window is open() / 4
+// intervals, so the passes cost a fraction of the run and the run ends within a few steps of the
+// last member's break. A member settles as soon as it is known to cross; its crossing time is
+// bisected later with 255 others (crossing.h, finish_hermite_roots: 64 at a time on AVX-512). 10^4
+// seeds of a 30-bead chain cost ~1.3 x one run for a slow pull, 3.6 x at beta = 0.02 and ~44 x for
+// a jerk on one thread; 1.3, 2.8 and 24 x on two (each seed's own bit-exact crossing time;
+// tests/bench/README.md, session 30).
 #pragma once
 
 #include <atomic>
