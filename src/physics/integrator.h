@@ -142,7 +142,8 @@ class Integrator {
   // every interval [ta, tb] of step `step` (1, 2, ...; a step split at a kick or a kink is
   // several) is handed here as it is committed whole, with the state at both its ends as the
   // kernels hold it (integrated_state()'s psi and vel). Before an ensemble member's first break
-  // its trajectory is this run's, bit for bit. Steps go one at a time (no temporal blocks).
+  // its trajectory is this run's, bit for bit. Steps go one at a time (no temporal blocks). Not
+  // for a chain with a pull string (its crossing would not break it).
   using IntervalTap =
       std::function<void(std::int64_t step, double ta, double tb, const double* psi0,
                          const double* vel0, const double* psi1, const double* vel1)>;
