@@ -355,7 +355,7 @@ class Ensemble {
         const std::size_t j = w * kWord + static_cast<std::size_t>(std::countr_zero(left));
         if (!(row[j] <= top_[j])) continue;
         near_here_.push_back(j);
-        if (k == count || rising_[(k - 1) * n_ + j] >= row[j])
+        if (k == count || (k > 0 && rising_[(k - 1) * n_ + j] >= row[j]))
           k = first_at_least(rising_.data() + j, n_, coarse_.data() + j * (length_ / 16), k,
                              row[j]);
       }
