@@ -16,13 +16,31 @@
 #include "physics/coefficients.h"
 #include "physics/crossing.h"
 #include "physics/integrator.h"
+#include "physics/simd.h"
 #include "physics/stop_flag.h"
+#include "physics/threshold_ensemble_reach.h"
 #include "physics/worker_pool.h"
 
 namespace cb {
 
 namespace detail {
 #include "physics/stencil.inc"
+
+namespace sse2 {
+#include "physics/threshold_ensemble_reach.inc"
+}  // namespace sse2
+
+SpringReaches spring_reaches_for_cpu() {
+  switch (active_simd()) {
+    case SimdPath::Avx512:
+      return avx512::spring_reaches;
+    case SimdPath::Avx2:
+      return avx2::spring_reaches;
+    case SimdPath::Sse2:
+      break;
+  }
+  return sse2::spring_reaches;
+}
 }  // namespace detail
 
 // A hanging chain is integrated about its equilibrium with bounds shifted per spring
@@ -117,12 +135,6 @@ SpringEnds spring_ends(const IntervalRing::Ends& e, std::size_t i) {
   return {e.psi0[i] - xl, e.psi1[i] - nl, e.vel0[i] - vl, e.vel1[i] - wl};
 }
 
-// Spring j's reach in an interval (stencil.inc's bound): no phi_c,j above it can be crossed
-// there, on either side (may_cross_between's sums are at most this one: rounding is monotone).
-double reach_of(double p0, double p1, double m0, double m1, double slack) {
-  return std::max(std::abs(p0), std::abs(p1)) + slack * (detail::sabs(m0) + detail::sabs(m1));
-}
-
 // The first index of w[0, n) (non-decreasing, w[n - 1] >= x) holding at least x: the number
 // below x, counted first among every 16th entry (coarse[b] = w[16 b + 15]), then in one block
 // of 16. Counts vectorise; a binary search's chain of dependent loads cost a member ~40 ns.
@@ -209,7 +221,8 @@ class Ensemble {
         top_(n_),
         base_(level_base(e.chain.threshold)),
         levels_(count * words_ * kWord),
-        top_levels_(words_ * kWord) {
+        top_levels_(words_ * kWord),
+        spring_reaches_(detail::spring_reaches_for_cpu()) {
     // Each member's levels and each group's lowest, then the members in order of it.
     std::vector<int> keys(groups_ * count), start(groups_ * kKeys, 0);
     std::vector<Level> lowest(words_ * kWord / kGroup);
@@ -298,13 +311,11 @@ class Ensemble {
       const IntervalRing::Ends e = ring_.ends(i);
       const IntervalRing::Meta& t = ring_.meta(i);
       const double slack = detail::hermite_slack(t.tb - t.ta);
+      // Each spring's reach there (no phi_c,j above it can be crossed there, on either side:
+      // may_cross_between's sums are at most this one, rounding is monotone).
       double* __restrict reach = reach_.data() + ring_.slot(i) * n_;
       double* __restrict rising = rising_.data() + k * n_;
-      // Spring 1 (psi_0 = 0), then springs 2..N in one loop without a branch (it vectorises).
-      reach[0] = reach_of(e.psi0[0], e.psi1[0], e.vel0[0], e.vel1[0], slack);
-      for (std::size_t j = 1; j < n_; ++j)
-        reach[j] = reach_of(e.psi0[j] - e.psi0[j - 1], e.psi1[j] - e.psi1[j - 1],
-                            e.vel0[j] - e.vel0[j - 1], e.vel1[j] - e.vel1[j - 1], slack);
+      spring_reaches_(e.psi0, e.vel0, e.psi1, e.vel1, n_, slack, reach);
       for (std::size_t j = 0; j < n_; ++j) {
         top[j] = std::max(top[j], reach[j]);
         rising[j] = top[j];
@@ -473,6 +484,7 @@ class Ensemble {
   std::int32_t base_;              // level_of's
   std::vector<Level> levels_;      // member m's levels of phi_c,j at m words_ kWord + j - 1
   std::vector<Level> top_levels_;  // take()'s levels of top_, padded below any member's
+  detail::SpringReaches spring_reaches_;  // the widest this CPU runs
   // Members settled whose crossing times are not bisected yet (finish), and their roots: member
   // k's are roots_[first_root of k .. first_root of k + 1).
   struct Pending {

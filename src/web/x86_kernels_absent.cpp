@@ -1,5 +1,5 @@
 // The page has no x86 kernels (rk4_*_avx2.cpp, *_avx512.cpp, lanes_*.cpp, crossing_*.cpp,
-// threshold_draw_*.cpp: x86 intrinsics and target pragmas), but the dispatch files that name them
+// threshold_draw_*.cpp, threshold_ensemble_reach_*.cpp: x86 intrinsics and target pragmas), but the dispatch files that name them
 // (rk4_tile.cpp, rk4_chain.cpp (with rk4_segments.h), lanes.cpp, crossing.cpp, threshold_draw.cpp)
 // are the program's own. On WebAssembly simd_supported() is true for the portable path only
 // (physics/simd.cpp), so active_simd() is SimdPath::Sse2 and these are never called: the page runs
@@ -11,6 +11,7 @@
 #include "physics/rk4_segments.h"
 #include "physics/rk4_tile.h"
 #include "physics/threshold_draw.h"
+#include "physics/threshold_ensemble_reach.h"
 
 namespace cb::detail {
 
@@ -45,6 +46,10 @@ namespace cb::detail {
     __builtin_trap();                                                     \
   }                                                                       \
   void weibull_quantiles(const double*, std::size_t, double, double*) {   \
+    __builtin_trap();                                                     \
+  }                                                                       \
+  void spring_reaches(const double*, const double*, const double*,        \
+                      const double*, std::size_t, double, double*) {      \
     __builtin_trap();                                                     \
   }                                                                       \
   }

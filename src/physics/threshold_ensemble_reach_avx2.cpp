@@ -1,0 +1,17 @@
+// The ensemble's reaches (threshold_ensemble_reach.inc) compiled for AVX2.
+#include <immintrin.h>
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <type_traits>
+
+#include "physics/threshold_ensemble_reach.h"
+#include "physics/target_avx2_begin.inc"
+
+namespace cb::detail::avx2 {
+#include "physics/stencil.inc"
+#include "physics/threshold_ensemble_reach.inc"
+}  // namespace cb::detail::avx2
+
+#include "physics/target_end.inc"
