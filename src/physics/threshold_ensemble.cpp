@@ -312,14 +312,10 @@ class Ensemble {
       const IntervalRing::Meta& t = ring_.meta(i);
       const double slack = detail::hermite_slack(t.tb - t.ta);
       // Each spring's reach there (no phi_c,j above it can be crossed there, on either side:
-      // may_cross_between's sums are at most this one, rounding is monotone).
+      // may_cross_between's sums are at most this one, rounding is monotone) and its largest.
       double* __restrict reach = reach_.data() + ring_.slot(i) * n_;
       double* __restrict rising = rising_.data() + k * n_;
-      spring_reaches_(e.psi0, e.vel0, e.psi1, e.vel1, n_, slack, reach);
-      for (std::size_t j = 0; j < n_; ++j) {
-        top[j] = std::max(top[j], reach[j]);
-        rising[j] = top[j];
-      }
+      spring_reaches_(e.psi0, e.vel0, e.psi1, e.vel1, n_, slack, reach, top, rising);
       if (k % 16 == 15)
         for (std::size_t j = 0; j < n_; ++j) coarse_[j * (length_ / 16) + k / 16] = top[j];
     }
@@ -345,7 +341,12 @@ class Ensemble {
     near_.clear();
     near_springs_.clear();
     std::size_t kept = 0;
-    for (const int m : open_) {
+    for (std::size_t k = 0; k < open_.size(); ++k) {
+      const int m = open_[k];
+      // The list's order is the joining's, not memory's: a line fetched a few members ahead.
+      if (k + 8 < open_.size())
+        __builtin_prefetch(levels_.data() +
+                           static_cast<std::size_t>(open_[k + 8]) * words_ * kWord);
       const Level* level = levels_.data() + static_cast<std::size_t>(m) * words_ * kWord;
       std::uint32_t any = 0;
       for (std::size_t w = 0; w < words_; ++w) {
@@ -481,9 +482,9 @@ class Ensemble {
   // largest up to the k-th of them at k N + j - 1 (non-decreasing in k; every 16th also at
   // (j - 1) length_ / 16 + k / 16 in coarse_), and its largest over all of them at j - 1.
   std::vector<double> reach_, rising_, coarse_, top_;
-  std::int32_t base_;              // level_of's
-  std::vector<Level> levels_;      // member m's levels of phi_c,j at m words_ kWord + j - 1
-  std::vector<Level> top_levels_;  // take()'s levels of top_, padded below any member's
+  std::int32_t base_;                     // level_of's
+  std::vector<Level> levels_;             // member m's levels of phi_c,j at m words_ kWord + j - 1
+  std::vector<Level> top_levels_;         // take()'s levels of top_, padded below any member's
   detail::SpringReaches spring_reaches_;  // the widest this CPU runs
   // Members settled whose crossing times are not bisected yet (finish), and their roots: member
   // k's are roots_[first_root of k .. first_root of k + 1).

@@ -8,22 +8,24 @@
 namespace cb::detail {
 
 // reach[j] for springs j + 1 = 1..n from the state at both ends of an interval (psi_0 = 0) and
-// (4/27) h: stencil.inc's bound, max(|phi_0|, |phi_1|) + slack (|dphi_0| + |dphi_1|).
+// (4/27) h: stencil.inc's bound, max(|phi_0|, |phi_1|) + slack (|dphi_0| + |dphi_1|); then
+// top[j], the largest so far, raised to it, and rising[j] = top[j].
 using SpringReaches = void (*)(const double* psi0, const double* vel0, const double* psi1,
-                               const double* vel1, std::size_t n, double slack, double* reach);
+                               const double* vel1, std::size_t n, double slack, double* reach,
+                               double* top, double* rising);
 SpringReaches spring_reaches_for_cpu();
 
 namespace sse2 {
 void spring_reaches(const double* psi0, const double* vel0, const double* psi1, const double* vel1,
-                    std::size_t n, double slack, double* reach);
+                    std::size_t n, double slack, double* reach, double* top, double* rising);
 }
 namespace avx2 {
 void spring_reaches(const double* psi0, const double* vel0, const double* psi1, const double* vel1,
-                    std::size_t n, double slack, double* reach);
+                    std::size_t n, double slack, double* reach, double* top, double* rising);
 }
 namespace avx512 {
 void spring_reaches(const double* psi0, const double* vel0, const double* psi1, const double* vel1,
-                    std::size_t n, double slack, double* reach);
+                    std::size_t n, double slack, double* reach, double* top, double* rising);
 }
 
 }  // namespace cb::detail

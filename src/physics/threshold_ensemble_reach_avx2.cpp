@@ -7,6 +7,8 @@
 #include <type_traits>
 
 #include "physics/threshold_ensemble_reach.h"
+
+// The target from here on, after the declarations: their callers are built for the baseline.
 #include "physics/target_avx2_begin.inc"
 
 namespace cb::detail::avx2 {

@@ -1,4 +1,4 @@
-// The ensemble's reaches (threshold_ensemble_reach.inc) compiled for AVX512.
+// The ensemble's reaches (threshold_ensemble_reach.inc) compiled for AVX-512.
 #include <immintrin.h>
 
 #include <cmath>
@@ -7,6 +7,8 @@
 #include <type_traits>
 
 #include "physics/threshold_ensemble_reach.h"
+
+// The target from here on, after the declarations: their callers are built for the baseline.
 #include "physics/target_avx512_begin.inc"
 
 namespace cb::detail::avx512 {
