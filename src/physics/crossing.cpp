@@ -76,15 +76,8 @@ void finish_hermite_roots(HermiteRoot* roots, std::size_t count) {
 // groups the CPU runs (crossing_avx2.cpp, crossing_avx512.cpp); the same bits either way.
 void finish_hermite_roots(HermiteRoot* roots, std::size_t count) {
   if (count <= 1) return finish_roots<2, 2>(roots, count);
-  switch (active_simd()) {
-    case SimdPath::Avx512:
-      return avx512::finish_hermite_roots(roots, count);
-    case SimdPath::Avx2:
-      return avx2::finish_hermite_roots(roots, count);
-    case SimdPath::Sse2:
-      break;
-  }
-  sse2::finish_hermite_roots(roots, count);
+  by_simd(active_simd(), &sse2::finish_hermite_roots, &avx2::finish_hermite_roots,
+          &avx512::finish_hermite_roots)(roots, count);
 }
 
 int earliest_crossing(const std::vector<Candidate>& candidates, const ChainCoefficients& coef,

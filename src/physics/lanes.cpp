@@ -14,6 +14,7 @@
 #include "physics/crossing.h"
 #include "physics/lane_far.h"
 #include "physics/lanes_interval.h"
+#include "physics/simd.h"
 #include "physics/stop_flag.h"
 
 namespace cb {
@@ -425,15 +426,8 @@ bool run_first_breaks_in_lanes(int beads, const std::function<std::optional<Lane
 namespace detail {
 
 LanesKernel lanes_kernel(SimdPath path) {
-  switch (path) {
-    case SimdPath::Avx512:
-      return avx512::lanes_interval;
-    case SimdPath::Avx2:
-      return avx2::lanes_interval;
-    case SimdPath::Sse2:
-      break;
-  }
-  return sse2::lanes_interval;
+  return by_simd<LanesKernel>(path, sse2::lanes_interval, avx2::lanes_interval,
+                              avx512::lanes_interval);
 }
 
 }  // namespace detail

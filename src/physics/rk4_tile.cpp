@@ -1,5 +1,7 @@
 #include "physics/rk4_tile.h"
 
+#include "physics/simd.h"
+
 namespace cb::detail {
 
 TileScratch::TileScratch() {
@@ -9,15 +11,7 @@ TileScratch::TileScratch() {
 }
 
 Rk4Beads rk4_kernel(SimdPath path) {
-  switch (path) {
-    case SimdPath::Avx512:
-      return avx512::rk4_beads;
-    case SimdPath::Avx2:
-      return avx2::rk4_beads;
-    case SimdPath::Sse2:
-      break;
-  }
-  return sse2::rk4_beads;
+  return by_simd<Rk4Beads>(path, sse2::rk4_beads, avx2::rk4_beads, avx512::rk4_beads);
 }
 
 }  // namespace cb::detail

@@ -35,4 +35,19 @@ SimdPath simd_from_setting(const char* value);
 // SimdChoiceError; the command line calls it at start-up so a bad value exits at once).
 SimdPath active_simd();
 
+// Of a kernel's three builds (the baseline's, AVX2's, AVX-512's), the one for `path`: the one
+// switch every dispatch goes through (a path without a build of its own passes nullptr or {}).
+template <class Kernel>
+Kernel by_simd(SimdPath path, Kernel sse2, Kernel avx2, Kernel avx512) {
+  switch (path) {
+    case SimdPath::Avx512:
+      return avx512;
+    case SimdPath::Avx2:
+      return avx2;
+    case SimdPath::Sse2:
+      break;
+  }
+  return sse2;
+}
+
 }  // namespace cb

@@ -50,16 +50,15 @@ double weibull_quantile(double u, double shape) {
   return scaled_anywhere(parts, exp_in_range(t));
 }
 
-void weibull_quantiles(const double* u, std::size_t n, double shape, double* out) {
-  switch (active_simd()) {
-    case SimdPath::Avx512:
-      return detail::avx512::weibull_quantiles(u, n, shape, out);
-    case SimdPath::Avx2:
-      return detail::avx2::weibull_quantiles(u, n, shape, out);
-    case SimdPath::Sse2:
-      break;
-  }
+namespace {
+void weibull_quantiles_one_by_one(const double* u, std::size_t n, double shape, double* out) {
   for (std::size_t i = 0; i < n; ++i) out[i] = weibull_quantile(u[i], shape);
+}
+}  // namespace
+
+void weibull_quantiles(const double* u, std::size_t n, double shape, double* out) {
+  by_simd(active_simd(), &weibull_quantiles_one_by_one, &detail::avx2::weibull_quantiles,
+          &detail::avx512::weibull_quantiles)(u, n, shape, out);
 }
 
 double normal_quantile(double p) {

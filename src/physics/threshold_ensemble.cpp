@@ -31,15 +31,8 @@ namespace sse2 {
 }  // namespace sse2
 
 SpringReaches spring_reaches_for_cpu() {
-  switch (active_simd()) {
-    case SimdPath::Avx512:
-      return avx512::spring_reaches;
-    case SimdPath::Avx2:
-      return avx2::spring_reaches;
-    case SimdPath::Sse2:
-      break;
-  }
-  return sse2::spring_reaches;
+  return by_simd<SpringReaches>(active_simd(), sse2::spring_reaches, avx2::spring_reaches,
+                                avx512::spring_reaches);
 }
 }  // namespace detail
 
