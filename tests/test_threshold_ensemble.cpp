@@ -329,3 +329,79 @@ TEST_CASE("an ensemble shared out on threads gives every member the same bits",
     CHECK(end.first.tau == a.first.tau);
   }
 }
+
+TEST_CASE(
+    "a member whose threshold lies between a step's end values and its cubic's peak breaks "
+    "there, as Integrator does",
+    "[ensemble][flaws]") {
+  // The crossing bound's slack, (4/27) h (|dphi_0| + |dphi_1|), is what lets a spring that peaks
+  // inside a step be tested there at all: its ends stay below phi_c, its Hermite cubic does not.
+  // A kicked chain without friction, coarse steps (the peaks stand well above the ends); for
+  // each spring the first step whose cubic rises above every |phi_j| before it at an inner
+  // turning point, and members whose phi_c,j lies between that step's end values and the peak
+  // (every other spring unbreakable): each must break there, at Integrator's tau.
+  constexpr int kBeads = 6;
+  constexpr double kDt = 0.05;
+  constexpr std::int64_t kLast = 400;
+  cb::DriveDesc kick;
+  kick.type = cb::DriveType::Impulses;
+  kick.times = {0.5, 3.1};
+  kick.strengths = {1.0, -0.7};
+  cb::ChainParams chain;
+  chain.beads = kBeads;
+  chain.gamma = 0.0;
+  chain.threshold = std::numeric_limits<double>::infinity();
+  chain.normalize();
+  // The trajectory at every step's end, as the members share it before their breaks.
+  cb::Integrator run(chain, cb::make_forcing(kick), {kDt, 1});
+  std::vector<std::vector<double>> psi{run.state().psi}, vel{run.state().vel};
+  std::vector<double> tau{run.state().tau};
+  while (run.steps_done() < kLast) {
+    REQUIRE(run.step_up_to(1) == 1);
+    psi.push_back(run.state().psi);
+    vel.push_back(run.state().vel);
+    tau.push_back(run.state().tau);
+  }
+  const auto phi = [&](std::size_t k, int j, const std::vector<std::vector<double>>& x) {
+    return x[k][static_cast<std::size_t>(j - 1)] -
+           (j > 1 ? x[k][static_cast<std::size_t>(j - 2)] : 0.0);
+  };
+  std::vector<cb::ChainParams> members;
+  int peaks = 0, beyond_half_slack = 0;
+  for (int j = 1; j <= kBeads; ++j) {
+    double highest = 0.0;  // the largest |phi_j| so far, at step ends and inside steps
+    for (std::size_t k = 0; k + 1 < psi.size(); ++k) {
+      const double h = tau[k + 1] - tau[k];
+      const double p0 = phi(k, j, psi), p1 = phi(k + 1, j, psi);
+      const double m0 = phi(k, j, vel), m1 = phi(k + 1, j, vel);
+      const double a = p0, b = h * m0, q = -3 * p0 - 2 * h * m0 + 3 * p1 - h * m1,
+                   d = 2 * p0 + h * m0 - 2 * p1 + h * m1;
+      double peak = 0.0;
+      for (int i = 0; i <= 4096; ++i) {
+        const double s = i / 4096.0;
+        peak = std::max(peak, std::abs(a + s * (b + s * (q + s * d))));
+      }
+      const double ends = std::max({std::abs(p0), std::abs(p1), highest});
+      if (k > 0 && peak > ends * (1 + 1e-6)) {
+        ++peaks;
+        const double half_slack = 0.5 * (4.0 / 27.0) * h * (std::abs(m0) + std::abs(m1));
+        for (const double f : {0.2, 0.5, 0.8, 0.95}) {
+          cb::ChainParams m = chain;
+          m.thresholds.assign(kBeads, 1e9);
+          m.thresholds[static_cast<std::size_t>(j - 1)] = ends + f * (peak - ends);
+          m.threshold = m.thresholds[static_cast<std::size_t>(j - 1)];
+          m.normalize();
+          members.push_back(m);
+          beyond_half_slack += m.threshold > std::max(std::abs(p0), std::abs(p1)) + half_slack;
+        }
+        break;
+      }
+      highest = std::max(highest, peak);
+    }
+  }
+  // Every spring peaks inside a step, and some thresholds lie where half the slack would miss
+  // them (a bound with half the slack fails this test: checked once).
+  CHECK(peaks == kBeads);
+  CHECK(beyond_half_slack > 0);
+  CHECK(check_members(chain, members, kick, kDt, kLast) == static_cast<int>(members.size()));
+}
