@@ -239,54 +239,8 @@ class Ensemble {
     unsettled_ = count;
   }
 
-  // A member's levels (words_ kWord, padded above any reach's) and each group's lowest.
-  void levels_of_member(const double* __restrict row, Level* __restrict level,
-                        Level* __restrict lowest) const {
-#if defined(__SSE2__)
-    if (group_ == kGroup) {
-      // Eight levels a register (the floats' bits shifted, packed with saturation: the clamp),
-      // then four groups' lowest at once (pairwise minima of the registers interleaved).
-      const __m128i base = _mm_set1_epi32(base_);
-      const auto four = [&](std::size_t j) {
-        const auto two = [&](std::size_t i) {
-          return i + 1 < n_ ? _mm_cvtpd_ps(_mm_loadu_pd(row + i))
-                 : i < n_
-                     ? _mm_cvtpd_ps(_mm_set_pd(std::numeric_limits<double>::infinity(), row[i]))
-                     : _mm_set1_ps(std::numeric_limits<float>::infinity());
-        };
-        const __m128 f = _mm_movelh_ps(two(j), two(j + 2));
-        return _mm_sub_epi32(_mm_srai_epi32(_mm_castps_si128(f), 12), base);
-      };
-      for (std::size_t w = 0; w < words_; ++w) {
-        __m128i eight[4];
-        for (std::size_t q = 0; q < 4; ++q) {
-          const std::size_t j = w * kWord + 8 * q;
-          eight[q] = _mm_max_epi16(_mm_packs_epi32(four(j), four(j + 4)), _mm_setzero_si128());
-          _mm_storeu_si128(reinterpret_cast<__m128i*>(level + j), eight[q]);
-        }
-        const __m128i ab = _mm_min_epi16(_mm_unpacklo_epi16(eight[0], eight[1]),
-                                         _mm_unpackhi_epi16(eight[0], eight[1]));
-        const __m128i cd = _mm_min_epi16(_mm_unpacklo_epi16(eight[2], eight[3]),
-                                         _mm_unpackhi_epi16(eight[2], eight[3]));
-        const __m128i abcd = _mm_min_epi16(_mm_unpacklo_epi32(ab, cd), _mm_unpackhi_epi32(ab, cd));
-        const __m128i low = _mm_min_epi16(abcd, _mm_srli_si128(abcd, 8));
-        _mm_storel_epi64(reinterpret_cast<__m128i*>(lowest + 4 * w), low);
-      }
-      return;
-    }
-#endif
-    for (std::size_t j = 0; j < n_; ++j) level[j] = level_of(row[j], base_);
-    for (std::size_t j = n_; j < words_ * kWord; ++j) level[j] = kTopLevel;  // above any reach's
-    for (std::size_t g = 0; g < groups_; ++g)
-      lowest[g] = *std::min_element(level + g * group_, level + std::min(n_, g * group_ + group_));
-  }
-
-  std::size_t open() const {
-    return unsettled_;
-  }
-  std::int64_t taken() const {
-    return taken_;
-  }
+  std::size_t open() const { return unsettled_; }
+  std::int64_t taken() const { return taken_; }
 
   // The intervals the run has handed since the last call, [taken(), upto): each spring's reach
   // in each (stencil.inc's bound: no member whose phi_c,j lies above it can cross there) and
@@ -375,6 +329,49 @@ class Ensemble {
   }
 
  private:
+  // A member's levels (words_ kWord, padded above any reach's) and each group's lowest.
+  void levels_of_member(const double* __restrict row, Level* __restrict level,
+                        Level* __restrict lowest) const {
+#if defined(__SSE2__)
+    if (group_ == kGroup) {
+      // level_of eight a register (the floats' bits shifted, packed with saturation: the clamp;
+      // a level above level_of's would miss crossings, tests/test_threshold_ensemble.cpp), then
+      // four groups' lowest at once (pairwise minima of the registers interleaved).
+      const __m128i base = _mm_set1_epi32(base_);
+      const auto four = [&](std::size_t j) {
+        const auto two = [&](std::size_t i) {
+          return i + 1 < n_ ? _mm_cvtpd_ps(_mm_loadu_pd(row + i))
+                 : i < n_
+                     ? _mm_cvtpd_ps(_mm_set_pd(std::numeric_limits<double>::infinity(), row[i]))
+                     : _mm_set1_ps(std::numeric_limits<float>::infinity());
+        };
+        const __m128 f = _mm_movelh_ps(two(j), two(j + 2));
+        return _mm_sub_epi32(_mm_srai_epi32(_mm_castps_si128(f), 12), base);
+      };
+      for (std::size_t w = 0; w < words_; ++w) {
+        __m128i eight[4];
+        for (std::size_t q = 0; q < 4; ++q) {
+          const std::size_t j = w * kWord + 8 * q;
+          eight[q] = _mm_max_epi16(_mm_packs_epi32(four(j), four(j + 4)), _mm_setzero_si128());
+          _mm_storeu_si128(reinterpret_cast<__m128i*>(level + j), eight[q]);
+        }
+        const __m128i ab = _mm_min_epi16(_mm_unpacklo_epi16(eight[0], eight[1]),
+                                         _mm_unpackhi_epi16(eight[0], eight[1]));
+        const __m128i cd = _mm_min_epi16(_mm_unpacklo_epi16(eight[2], eight[3]),
+                                         _mm_unpackhi_epi16(eight[2], eight[3]));
+        const __m128i abcd = _mm_min_epi16(_mm_unpacklo_epi32(ab, cd), _mm_unpackhi_epi32(ab, cd));
+        const __m128i low = _mm_min_epi16(abcd, _mm_srli_si128(abcd, 8));
+        _mm_storel_epi64(reinterpret_cast<__m128i*>(lowest + 4 * w), low);
+      }
+      return;
+    }
+#endif
+    for (std::size_t j = 0; j < n_; ++j) level[j] = level_of(row[j], base_);
+    for (std::size_t j = n_; j < words_ * kWord; ++j) level[j] = kTopLevel;  // above any reach's
+    for (std::size_t g = 0; g < groups_; ++g)
+      lowest[g] = *std::min_element(level + g * group_, level + std::min(n_, g * group_ + group_));
+  }
+
   // Member m's thresholds into the cache a few members ahead (each row its own lines; the
   // list's gaps defeat the hardware's stride prefetch).
   void prefetch_row(int m) const {
