@@ -128,19 +128,6 @@ SpringEnds spring_ends(const IntervalRing::Ends& e, std::size_t i) {
   return {e.psi0[i] - xl, e.psi1[i] - nl, e.vel0[i] - vl, e.vel1[i] - wl};
 }
 
-// The first index of w[0, n) (non-decreasing, w[n - 1] >= x) holding at least x: the number
-// below x, counted first among every 16th entry (coarse[b] = w[16 b + 15]), then in one block
-// of 16. Counts vectorise; a binary search's chain of dependent loads cost a member ~40 ns.
-std::size_t first_at_least(const double* w, std::size_t stride, const double* coarse, std::size_t n,
-                           double x) {
-  std::size_t block = 0;
-  for (std::size_t b = 0; b < n / 16; ++b) block += static_cast<std::size_t>(coarse[b] < x);
-  const std::size_t first = 16 * block, last = std::min(n, first + 16);
-  std::size_t below = 0;
-  for (std::size_t k = first; k < last; ++k) below += static_cast<std::size_t>(w[k * stride] < x);
-  return first + below;
-}
-
 // A threshold or reach as a 15-bit level, monotone in it: x <= y gives level(x) <= level(y), so
 // a member none of whose levels reaches its spring's level cannot reach its bound. The level is
 // the exponent and first 11 bits of the mantissa of x as a float (rounding is monotone), from
@@ -209,7 +196,6 @@ class Ensemble {
         key_(groups_ * count),
         next_(groups_, 0),
         reach_(length_ * n_),
-        rising_(length_ * n_),
         coarse_(length_ / 16 * n_),
         top_(n_),
         base_(level_base(e.chain.threshold)),
@@ -261,8 +247,7 @@ class Ensemble {
       // Each spring's reach there (no phi_c,j above it can be crossed there, on either side:
       // may_cross_between's sums are at most this one, rounding is monotone) and its largest.
       double* __restrict reach = reach_.data() + ring_.slot(i) * n_;
-      double* __restrict rising = rising_.data() + k * n_;
-      spring_reaches_(e.psi0, e.vel0, e.psi1, e.vel1, n_, slack, reach, top, rising);
+      spring_reaches_(e.psi0, e.vel0, e.psi1, e.vel1, n_, slack, reach, top);
       if (k % 16 == 15)
         for (std::size_t j = 0; j < n_; ++j) coarse_[j * (length_ / 16) + k / 16] = top[j];
     }
@@ -372,6 +357,21 @@ class Ensemble {
       lowest[g] = *std::min_element(level + g * group_, level + std::min(n_, g * group_ + group_));
   }
 
+  // The first of the window's intervals [0, n) (from `from` on) whose reach of spring j + 1 is
+  // not below x; n when none is. Where some is, its block of 16 is the first whose spring's
+  // largest (coarse_) is not below x, the blocks counted (a count vectorises; a binary search's
+  // chain of dependent loads cost a member ~40 ns); then that block's reaches in turn (a NaN
+  // reach stops it early: no crossing there, and an earlier start only costs a test).
+  std::size_t first_reaching(std::size_t j, std::int64_t from, std::size_t n, double x) const {
+    const double* coarse = coarse_.data() + j * (length_ / 16);
+    std::size_t block = 0;
+    for (std::size_t b = 0; b < n / 16; ++b) block += static_cast<std::size_t>(coarse[b] < x);
+    const std::size_t last = std::min(n, 16 * block + 16);
+    for (std::size_t k = 16 * block; k < last; ++k)
+      if (!(reach_[ring_.slot(from + static_cast<std::int64_t>(k)) * n_ + j] < x)) return k;
+    return n;
+  }
+
   // Member m's thresholds into the cache a few members ahead (each row its own lines; the
   // list's gaps defeat the hardware's stride prefetch).
   void prefetch_row(int m) const {
@@ -399,9 +399,7 @@ class Ensemble {
         const std::size_t j = w * kWord + static_cast<std::size_t>(std::countr_zero(left));
         if (!(row[j] <= top_[j])) continue;
         near_here_.push_back(j);
-        if (k == count || (k > 0 && rising_[(k - 1) * n_ + j] >= row[j]))
-          k = first_at_least(rising_.data() + j, n_, coarse_.data() + j * (length_ / 16), k,
-                             row[j]);
+        if (k > 0) k = first_reaching(j, from, k, row[j]);
       }
     for (; k < count; ++k) {
       const std::int64_t i = from + static_cast<std::int64_t>(k);
@@ -469,9 +467,9 @@ class Ensemble {
   std::vector<std::size_t> near_here_;       // settle()'s springs (j - 1)
   std::int64_t taken_ = 0;                   // the intervals before this one are taken
   // Of the intervals taken last: spring j's reach in interval i at slot(i) N + j - 1, its
-  // largest up to the k-th of them at k N + j - 1 (non-decreasing in k; every 16th also at
-  // (j - 1) length_ / 16 + k / 16 in coarse_), and its largest over all of them at j - 1.
-  std::vector<double> reach_, rising_, coarse_, top_;
+  // largest up to the k-th of them for every 16th k at (j - 1) length_ / 16 + k / 16 (coarse_),
+  // and its largest over all of them at j - 1.
+  std::vector<double> reach_, coarse_, top_;
   std::int32_t base_;                     // level_of's
   std::vector<Level> levels_;             // member m's levels of phi_c,j at m words_ kWord + j - 1
   std::vector<Level> top_levels_;         // take()'s levels of top_, padded below any member's

@@ -49,7 +49,7 @@ namespace cb::detail {
     __builtin_trap();                                                                          \
   }                                                                                            \
   void spring_reaches(const double*, const double*, const double*, const double*, std::size_t, \
-                      double, double*, double*, double*) {                                     \
+                      double, double*, double*) {                                              \
     __builtin_trap();                                                                          \
   }                                                                                            \
   }
