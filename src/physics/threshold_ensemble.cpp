@@ -193,7 +193,7 @@ class Ensemble {
         ends_(count),
         joined_(count, 0),
         by_key_(groups_ * count),
-        key_(groups_ * count),
+        key_end_(groups_ * kKeys, 0),
         next_(groups_, 0),
         reach_(length_ * n_),
         coarse_(length_ / 16 * n_),
@@ -203,24 +203,22 @@ class Ensemble {
         top_levels_(words_ * kWord),
         spring_reaches_(detail::spring_reaches_for_cpu()) {
     // Each member's levels and each group's lowest, then the members in order of it.
-    std::vector<int> keys(groups_ * count), start(groups_ * kKeys, 0);
+    std::vector<int> keys(groups_ * count);
     std::vector<Level> lowest(words_ * kWord / kGroup);
     for (std::size_t m = 0; m < count; ++m) {
       levels_of_member(phi_ + m * n_, levels_.data() + m * words_ * kWord, lowest.data());
       for (std::size_t g = 0; g < groups_; ++g) {
         keys[g * count + m] = lowest[g] >> kKeyShift;
-        ++start[g * kKeys + static_cast<std::size_t>(lowest[g] >> kKeyShift)];
+        ++key_end_[g * kKeys + static_cast<std::size_t>(lowest[g] >> kKeyShift)];
       }
     }
     for (std::size_t g = 0; g < groups_; ++g) {
-      int* at = start.data() + g * kKeys;
+      // Each key's start, raised past its members as they are placed: then its end.
+      int* at = key_end_.data() + g * kKeys;
       std::exclusive_scan(at, at + kKeys, at, 0);
-      for (std::size_t m = 0; m < count; ++m) {
-        const int key = keys[g * count + m];
-        const std::size_t k = g * count + static_cast<std::size_t>(at[key]++);
-        by_key_[k] = static_cast<int>(m);
-        key_[k] = key;
-      }
+      for (std::size_t m = 0; m < count; ++m)
+        by_key_[g * count + static_cast<std::size_t>(at[keys[g * count + m]]++)] =
+            static_cast<int>(m);
     }
     unsettled_ = count;
   }
@@ -259,9 +257,9 @@ class Ensemble {
       const auto highest = *std::max_element(
           top_levels_.begin() + static_cast<std::ptrdiff_t>(g * group_),
           top_levels_.begin() + static_cast<std::ptrdiff_t>(std::min(n_, g * group_ + group_)));
-      const int reached = highest >> kKeyShift;
-      std::size_t& next = next_[g];
-      for (; next < members && key_[g * members + next] <= reached; ++next) {
+      const auto joined = static_cast<std::size_t>(
+          key_end_[g * kKeys + static_cast<std::size_t>(highest >> kKeyShift)]);
+      for (std::size_t& next = next_[g]; next < joined; ++next) {
         const int m = by_key_[g * members + next];
         if (joined_[static_cast<std::size_t>(m)] != kWaiting) continue;
         joined_[static_cast<std::size_t>(m)] = kOpen;
@@ -456,9 +454,9 @@ class Ensemble {
   // Each member's state: waiting to join the tests, open in them (open_), settled.
   enum : char { kWaiting, kOpen, kSettled };
   std::vector<char> joined_;
-  // Group g's members in order of their key (by_key_, key_ at g members + k), of which the first
-  // next_[g] have joined.
-  std::vector<int> by_key_, key_;
+  // Group g's members in order of their key (by_key_ at g members + k; those of keys up to k
+  // end at key_end_[g kKeys + k]), of which the first next_[g] have joined.
+  std::vector<int> by_key_, key_end_;
   std::vector<std::size_t> next_;
   std::size_t unsettled_ = 0;
   std::vector<int> open_;
