@@ -171,12 +171,13 @@ TEST_CASE("sweep builds its points from the scene read once, named by their --va
   o.scene = scene_file("anomalous_breaking.toml");
   o.axes = {"--vary chain.threshold=2:4:3", "--values drive.beta=0.02,0.05"};
   const cb::Grid grid = cb::sweep_grid(o);
-  const auto scenes = cb::point_scenes(o, grid, {0, grid.size()});
-  REQUIRE(scenes.size() == 6);
-  CHECK(scenes[5].chain.threshold ==
+  const auto points = cb::sweep_points(o, grid, {0, grid.size()});
+  REQUIRE(points.size() == 6);
+  const cb::SceneDesc last = points.scene_of(5);
+  CHECK(last.chain.threshold ==
         cb::load_scene(o.scene, {{"chain.threshold", "4"}}).chain.threshold);
-  CHECK(scenes[5].origins.at("chain.threshold") == "--vary chain.threshold=2:4:3 (value 4)");
-  CHECK(scenes[5].origins.at("drive.beta") == "--values drive.beta=0.02,0.05 (value 0.05)");
+  CHECK(last.origins.at("chain.threshold") == "--vary chain.threshold=2:4:3 (value 4)");
+  CHECK(last.origins.at("drive.beta") == "--values drive.beta=0.02,0.05 (value 0.05)");
 }
 
 TEST_CASE("machine memory: MemAvailable, or the cgroup's limit when lower", "[hardening]") {
@@ -310,9 +311,9 @@ TEST_CASE("a sweep built on several threads reports its first bad point in grid 
   std::string values;
   for (int i = 0; i < 2000; ++i)
     values += (i ? "," : "") + std::string(i == 700 ? "-0.7" : i == 1500 ? "-1.5" : "0.01");
-  const auto bad = run_chainbreak("sweep " + scene_file("anomalous_breaking.toml") +
-                                  " --jobs 2 --values chain.gamma=" + values + " --csv " +
-                                  dir.file("s.csv"));
+  const auto bad =
+      run_chainbreak("sweep " + scene_file("anomalous_breaking.toml") +
+                     " --jobs 2 --values chain.gamma=" + values + " --csv " + dir.file("s.csv"));
   CHECK(bad.status == 2);
   CHECK_THAT(bad.err, Contains("chain.gamma must be >= 0") && Contains("got -0.7"));
   CHECK_THAT(bad.err, !Contains("got -1.5"));

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstring>
 #include <map>
-
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -194,7 +193,7 @@ TEST_CASE("a lane whose state stops being finite ends Failed, the sweep reports 
   scenes[1].integrator.dt = v.dt;
   scenes[1].chain = v.chain;
   scenes[1].name = "unstable";
-  CHECK_THROWS_WITH(cb::sweep_first_breaks(scenes, cb::Solver::Rk4, 2, nullptr, {}),
+  CHECK_THROWS_WITH(cb::sweep_first_breaks(cb::points_of(scenes), cb::Solver::Rk4, 2, nullptr, {}),
                     Catch::Contains("unstable") && Catch::Contains("stability limit"));
 }
 
@@ -212,7 +211,7 @@ TEST_CASE("the rk4 sweep in lanes matches the values run one by one", "[lanes]")
     s.name = "value " + std::to_string(scenes.size());
     scenes.push_back(s);
   }
-  const auto got = cb::sweep_first_breaks(scenes, cb::Solver::Rk4, 2, nullptr, {});
+  const auto got = cb::sweep_first_breaks(cb::points_of(scenes), cb::Solver::Rk4, 2, nullptr, {});
   REQUIRE(got.size() == scenes.size());
   for (std::size_t i = 0; i < scenes.size(); ++i) {
     INFO(scenes[i].name);

@@ -3,6 +3,7 @@
 // with the point's values as overrides, which is what every point did before, and fail where
 // that fails (the message then names the --vary/--values option instead of --set). Issue 13
 // measures the sweep's speed on these scenes: a faster sweep of other scenes would not count.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <functional>
@@ -32,7 +33,7 @@ void check_points(const cb::SweepOptions& o) {
   try {
     grid = cb::sweep_grid(o);
   } catch (const std::exception&) {
-    return;  // the first value fails on its own: sweep_grid's check, not point_scenes'
+    return;  // the first value fails on its own: sweep_grid's check, not sweep_points'
   }
   for (std::size_t i = 0; i < grid.size(); ++i) {
     std::vector<cb::Override> overrides = o.overrides;
@@ -41,7 +42,7 @@ void check_points(const cb::SweepOptions& o) {
       overrides.push_back({grid.axes[k].key, cb::number_text(values[k])});
     const std::string parsed = outcome([&] { return cb::load_scene(o.scene, overrides); });
     const std::string in_memory = outcome([&] {
-      return cb::point_scenes(o, grid, {i, i + 1}).front();
+      return cb::sweep_points(o, grid, {i, i + 1}).scene_of(0);
     });
     INFO(o.scene << " point " << i);
     CHECK(in_memory == parsed);
@@ -80,7 +81,7 @@ TEST_CASE("sweep point scenes equal parsing the file with the values as override
 
 TEST_CASE("a grid point whose keys only pass together is the parsed scene", "[sweep][scene]") {
   // t_end = 1e11 with the scene's dt = 0.01 is 1e13 steps, past kMaxRunSteps (1e12), but with
-  // dt = 1 the point is valid: point_scenes must give the parsed scene, not an error.
+  // dt = 1 the point is valid: sweep_points must give the parsed scene, not an error.
   cb::SweepOptions o;
   o.scene = std::string(CHAINBREAK_SCENES) + "/anomalous_breaking.toml";
   o.axes = {"--values integrator.t_end=400,1e11", "--values integrator.dt=0.01,1"};
@@ -90,4 +91,72 @@ TEST_CASE("a grid point whose keys only pass together is the parsed scene", "[sw
   o.overrides = {{"integrator.dt", "1.6"}};
   o.axes = {"--values chain.beads=2,30", "--values drive.beta=0.1"};
   check_points(o);
+}
+
+TEST_CASE("a sweep over seeds shares one scene and gives each point its own, or its error",
+          "[sweep][scene][flaws]") {
+  // Issue #23: points that differ only in chain.seed keep one scene and their thresholds
+  // (app/sweep_points.h), checked by validate_new_thresholds. Each must be the parsed scene,
+  // fail where parsing fails: softening springs whose flat point (phi = 1.29 for b = -0.2) lies
+  // below a seed's largest threshold, a hanging chain whose weight (N G = 0.6 on spring 1)
+  // breaks a seed's weakest spring; and a seed that is negative or not whole.
+  const std::string flawed = std::string(CHAINBREAK_SCENES) + "/flawed_chain.toml";
+  const std::vector<std::vector<cb::Override>> variants{
+      {}, {{"chain.fput_beta", "-0.2"}}, {{"chain.gravity", "0.02"}}};
+  for (const auto& overrides : variants) {
+    for (const auto& axes : std::vector<std::vector<std::string>>{
+             {"--vary chain.seed=1:40:40"},
+             {"--values drive.beta=0.02,0.1", "--vary chain.seed=1:12:12"},
+             {"--vary chain.seed=1:12:12", "--values chain.beads=8,30"},
+             {"--values chain.seed=3,2.5,-1,4"}}) {
+      cb::SweepOptions o;
+      o.scene = flawed;
+      o.overrides = overrides;
+      o.axes = axes;
+      INFO((overrides.empty() ? "plain" : overrides.front().key) << " " << axes.front());
+      check_points(o);
+      // The whole grid at once: one scene per value of the other axes, every point its own
+      // scene, or the first failing point's error, named by its option and value.
+      const cb::Grid grid = cb::sweep_grid(o);
+      std::vector<std::string> parsed(grid.size());
+      std::size_t first_bad = grid.size();
+      for (std::size_t i = 0; i < grid.size(); ++i) {
+        std::vector<cb::Override> with = overrides;
+        const auto values = grid.point(i);
+        for (std::size_t k = 0; k < values.size(); ++k)
+          with.push_back({grid.axes[k].key, cb::number_text(values[k])});
+        parsed[i] = outcome([&] { return cb::load_scene(flawed, with); });
+        if (parsed[i] == "error") first_bad = std::min(first_bad, i);
+      }
+      // The first bad point's message as that point alone gives it: its scene set whole.
+      std::string first_error;
+      if (first_bad < grid.size()) {
+        try {
+          cb::sweep_points(o, grid, {first_bad, first_bad + 1});
+        } catch (const cb::SceneError& e) {
+          first_error = e.what();
+        }
+        REQUIRE_FALSE(first_error.empty());
+      }
+      try {
+        const cb::SweepPoints points = cb::sweep_points(o, grid, {0, grid.size()});
+        CHECK(first_error.empty());
+        std::size_t seeds = 0;
+        for (const auto& axis : grid.axes)
+          if (axis.key == "chain.seed") seeds = axis.values.size();
+        CHECK(points.scenes.size() == grid.size() / seeds);
+        for (std::size_t i = 0; i < grid.size(); ++i) {
+          INFO("point " << i);
+          CHECK(outcome([&] { return points.scene_of(i); }) == parsed[i]);
+          std::vector<double> phi(static_cast<std::size_t>(points.shared(i).chain.beads));
+          points.thresholds_of(i, phi.data());
+          const cb::SceneDesc whole = points.scene_of(i);
+          for (int j = 1; j <= whole.chain.beads; ++j)
+            CHECK(phi[static_cast<std::size_t>(j - 1)] == whole.chain.threshold_of(j));
+        }
+      } catch (const cb::SceneError& e) {
+        CHECK(e.what() == first_error);
+      }
+    }
+  }
 }

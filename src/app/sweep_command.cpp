@@ -93,7 +93,7 @@ int sweep_command(const SweepOptions& o) {
   require_memory(sweep_memory(o, grid, range), machine_memory(), "sweep " + o.scene,
                  "use fewer beads (chain.beads), fewer --jobs, or a shard of the grid (--shard)");
   // Validate the scene and every value before any work: a bad value fails now, not at row 300.
-  const std::vector<SceneDesc> scenes = point_scenes(o, grid, range);
+  const SweepPoints points = sweep_points(o, grid, range);
   // The CSV and its record are one set: a second sweep or a merge to the same name is refused
   // while this one runs (output_lock.h), so the pair never comes from two runs.
   if (!o.h5.empty()) check_output_path(o.h5, "out.h5");
@@ -104,12 +104,11 @@ int sweep_command(const SweepOptions& o) {
   // `jobs` threads, a watcher that reads only atomics (issue #12, row 13), first failure wins.
   std::vector<FirstBreak> results;
   try {
-    Progress progress("sweep", static_cast<double>(scenes.size()), o.quiet);
+    Progress progress("sweep", static_cast<double>(points.size()), o.quiet);
     std::function<void(std::size_t)> on_progress;
     if (!o.quiet)
       on_progress = [&](std::size_t done) { progress.update(static_cast<double>(done)); };
-    results = sweep_first_breaks(scenes, o.solver, o.jobs, &g_interrupted, on_progress,
-                                 threshold_groups(grid, range.first, range.size()));
+    results = sweep_first_breaks(points, o.solver, o.jobs, &g_interrupted, on_progress);
   } catch (const std::runtime_error& e) {
     std::fprintf(stderr, "chainbreak: %s\n", e.what());
     return 1;

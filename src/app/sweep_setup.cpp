@@ -1,12 +1,10 @@
 #include "app/sweep_setup.h"
 
 #include <algorithm>
-#include <exception>
 #include <filesystem>
 #include <thread>
 
 #include "app/csv.h"
-#include "app/sweep_values.h"
 #include "resources/resources.h"  // kMaxSweepValues
 #include "scene/scene_hash.h"
 #include "version.h"  // CHAINBREAK_VERSION (src/cmake/version.cmake)
@@ -76,46 +74,11 @@ double scene_bytes(const SceneDesc& s) {
 
 }  // namespace
 
-std::vector<SceneDesc> point_scenes(const SweepOptions& o, const Grid& grid, PointRange range) {
+SweepPoints sweep_points(const SweepOptions& o, const Grid& grid, PointRange range) {
   // The file is read and parsed once; each point's values are set in memory and validated
   // (issue #12: sweep used to parse the whole file again for every value).
-  const SceneVariations variations(o.scene, o.overrides);
-  const std::size_t count = range.size();
-  std::vector<SceneDesc> scenes(count);
-  // On the sweep's threads, each a contiguous slice (10^4 seeds are 3x10^5 threshold draws,
-  // issue #23). Each slice stops at its first bad point; the first of those in grid order is
-  // reported, as one thread would have.
-  constexpr std::size_t kPointsPerThread = 512;
-  const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
-  const std::size_t threads = std::clamp<std::size_t>(
-      std::min(o.jobs > 0 ? static_cast<std::size_t>(o.jobs) : cores, count / kPointsPerThread),
-      1, count > 0 ? count : 1);
-  std::vector<std::size_t> first_bad(threads, count);
-  std::vector<std::exception_ptr> errors(threads);
-  auto build = [&](std::size_t t) {
-    std::vector<NumberSetting> settings;
-    for (std::size_t i = count * t / threads; i < count * (t + 1) / threads; ++i) {
-      try {
-        const auto values = grid.point(range.first + i);
-        settings.clear();
-        for (std::size_t k = 0; k < values.size(); ++k)
-          settings.push_back({grid.axes[k].key, values[k], axis_origin(grid.axes[k], values[k])});
-        scenes[i] = variations.with(settings);
-        check_sweep_scene(scenes[i], o.solver);
-      } catch (...) {
-        first_bad[t] = i;
-        errors[t] = std::current_exception();
-        return;
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(build, t);
-  build(0);
-  for (auto& t : pool) t.join();
-  const auto bad = std::min_element(first_bad.begin(), first_bad.end());
-  if (*bad < count) std::rethrow_exception(errors[static_cast<std::size_t>(bad - first_bad.begin())]);
-  return scenes;
+  return sweep_points(SceneVariations(o.scene, o.overrides), grid, range, o.solver, o.jobs,
+                      axis_origin);
 }
 
 MemoryEstimate sweep_memory(const SweepOptions& o, const Grid& grid, PointRange range) {
@@ -131,7 +94,12 @@ MemoryEstimate sweep_memory(const SweepOptions& o, const Grid& grid, PointRange 
   MemoryEstimate m;
   // Every point's scene is built (and checked) before the first run; a table drive's rows
   // and the scene's strings are copied into each.
-  m.needs.push_back({"scenes of the points", points * scene_bytes(base)});
+  // Seeds of drawn thresholds share their scene and keep their thresholds (sweep_points.h).
+  const bool seeds =
+      base.threshold_draw && std::any_of(grid.axes.begin(), grid.axes.end(),
+                                         [](const GridAxis& a) { return a.key == "chain.seed"; });
+  m.needs.push_back(
+      {"scenes of the points", seeds ? points * (8.0 * beads + 32.0) : points * scene_bytes(base)});
   // One run per job at a time: RK4's arrays, and the exact solver's N x N tables too.
   const bool exact = o.solver == Solver::Exact;
   const double run = rk4_bytes(beads) + (exact ? exact_table_bytes(beads) : 0.0);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "app/sweep_points.h"
 #include "cluster/grid.h"
 #include "cluster/shard_record.h"
 #include "resources/resources.h"
@@ -16,8 +17,8 @@ namespace cb {
 // The grid of --vary / --values; GridError for a bad spec. Every key is checked against the
 // scene (an unknown key or a value the scene refuses is a SceneError naming the option).
 Grid sweep_grid(const SweepOptions& o);
-// The scenes of points [range): every value validated before any work.
-std::vector<SceneDesc> point_scenes(const SweepOptions& o, const Grid& grid, PointRange range);
+// The points [range) and their scenes: every value validated before any work.
+SweepPoints sweep_points(const SweepOptions& o, const Grid& grid, PointRange range);
 // What the sweep of points [range) will hold at once (resources.h): the points' scenes, one
 // run per job (RK4 arrays; the exact solver's N x N tables too) and the CSV text. Sized by
 // the largest chain any point runs.

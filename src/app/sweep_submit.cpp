@@ -108,7 +108,7 @@ int submit_sweep(const SweepOptions& o, const Grid& grid) {
   const fs::path dir = csv.string() + ".shards";
   const fs::path script = fs::path(csv).replace_extension(".sbatch");
   // Every point's scene is checked here, before anything is queued.
-  point_scenes(o, grid, {0, n});
+  sweep_points(o, grid, {0, n});
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec)

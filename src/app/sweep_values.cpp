@@ -33,37 +33,29 @@ FirstBreak sweep_first_break(const SceneDesc& scene, Solver solver, const std::a
   }
 }
 
-std::vector<std::size_t> threshold_groups(const Grid& grid, std::size_t first, std::size_t count) {
-  std::map<std::vector<double>, std::size_t> ids;
-  std::vector<std::size_t> out;
-  out.reserve(count);
-  for (std::size_t i = first; i < first + count; ++i) {
-    std::vector<double> p = grid.point(i);
-    for (std::size_t k = 0; k < p.size(); ++k) {
-      const std::string& key = grid.axes[k].key;
-      if (key == "chain.seed" || key == "chain.threshold" || key == "chain.threshold_shape")
-        p[k] = 0.0;  // not part of the id
-    }
-    out.push_back(ids.emplace(std::move(p), ids.size()).first->second);
-  }
-  return out;
-}
-
 namespace {
 
-// The scenes (indices) that one ensemble can run: same chain but for thresholds, same drive
-// (the caller's groups: the same values of every other key), step and end.
-std::vector<std::vector<std::size_t>> ensembles_of(const std::vector<SceneDesc>& scenes,
-                                                   const std::vector<std::size_t>& groups) {
+// The points (indices) that one ensemble can run: same chain but for thresholds, same drive
+// (one group: the same values of every other key), step and end.
+std::vector<std::vector<std::size_t>> ensembles_of(const SweepPoints& points) {
   std::map<std::size_t, std::vector<std::size_t>> by_group;
-  for (std::size_t i = 0; i < scenes.size(); ++i)
-    if (ensemble_can_run(scenes[i].chain)) by_group[groups[i]].push_back(i);
+  std::vector<double> row;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const ChainParams& chain = points.shared(i).chain;
+    row.resize(static_cast<std::size_t>(chain.beads));
+    points.thresholds_of(i, row.data());
+    if (ensemble_can_run(chain, row.data())) by_group[points.group[i]].push_back(i);
+  }
   std::vector<std::vector<std::size_t>> out;
   for (auto& [id, members] : by_group) {
     if (members.size() < 2) continue;
-    const SceneDesc& a = scenes[members.front()];
+    const SceneDesc& a = points.shared(members.front());
+    // Points that share a scene share all but their thresholds.
+    std::uint32_t checked = points.scene[members.front()];
     const bool shared = std::all_of(members.begin(), members.end(), [&](std::size_t i) {
-      const SceneDesc& b = scenes[i];
+      if (points.scene[i] == checked) return true;
+      const SceneDesc& b = points.shared(i);
+      checked = points.scene[i];
       return ensemble_can_share(a.chain, b.chain) && a.integrator.dt == b.integrator.dt &&
              planned_steps(a) == planned_steps(b);
     });
@@ -72,9 +64,9 @@ std::vector<std::vector<std::size_t>> ensembles_of(const std::vector<SceneDesc>&
   return out;
 }
 
-// The first breaks of each ensemble's scenes into `results`, ensembles shared out on `jobs`
+// The first breaks of each ensemble's points into `results`, ensembles shared out on `jobs`
 // threads; a member whose shared state failed runs alone, for Integrator's message.
-void run_ensembles(const std::vector<SceneDesc>& scenes,
+void run_ensembles(const SweepPoints& points,
                    const std::vector<std::vector<std::size_t>>& ensembles, int jobs,
                    const std::atomic<bool>* stop, std::vector<FirstBreak>& results) {
   if (jobs <= 0) jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -88,7 +80,7 @@ void run_ensembles(const std::vector<SceneDesc>& scenes,
     for (std::size_t g; (g = next++) < ensembles.size();) {
       try {
         const auto& members = ensembles[g];
-        const SceneDesc& first = scenes[members.front()];
+        const SceneDesc& first = points.shared(members.front());
         ThresholdEnsemble e;
         e.chain = first.chain;
         try {
@@ -98,15 +90,15 @@ void run_ensembles(const std::vector<SceneDesc>& scenes,
         }
         e.dt = first.integrator.dt;
         e.last_step = planned_steps(first);
-        const int n = first.chain.beads;
-        e.thresholds.reserve(members.size() * static_cast<std::size_t>(n));
-        for (std::size_t i : members)
-          for (int j = 1; j <= n; ++j) e.thresholds.push_back(scenes[i].chain.threshold_of(j));
+        const auto n = static_cast<std::size_t>(first.chain.beads);
+        e.thresholds.resize(members.size() * n);
+        for (std::size_t k = 0; k < members.size(); ++k)
+          points.thresholds_of(members[k], e.thresholds.data() + k * n);
         const std::vector<LaneEnd> ends = ensemble_first_breaks(e, stop, workers);
         for (std::size_t k = 0; k < members.size(); ++k) {
           const std::size_t i = members[k];
           if (ends[k].kind == LaneEnd::Kind::Failed)
-            results[i] = sweep_first_break(scenes[i], Solver::Rk4, stop);
+            results[i] = sweep_first_break(points.scene_of(i), Solver::Rk4, stop);
           if (ends[k].kind == LaneEnd::Kind::Broke)
             results[i] = {true, ends[k].first.spring, ends[k].first.tau};
         }
@@ -128,37 +120,35 @@ void run_ensembles(const std::vector<SceneDesc>& scenes,
 
 }  // namespace
 
-std::vector<FirstBreak> sweep_first_breaks(const std::vector<SceneDesc>& all_scenes, Solver solver,
-                                           int jobs, const std::atomic<bool>* stop,
-                                           const std::function<void(std::size_t)>& on_progress,
-                                           const std::vector<std::size_t>& groups) {
-  std::vector<FirstBreak> all_results(all_scenes.size());
+std::vector<FirstBreak> sweep_first_breaks(const SweepPoints& points, Solver solver, int jobs,
+                                           const std::atomic<bool>* stop,
+                                           const std::function<void(std::size_t)>& on_progress) {
+  std::vector<FirstBreak> all_results(points.size());
   // Ensembles over thresholds first (one run each); the other values as before.
-  std::vector<bool> done(all_scenes.size(), false);
+  std::vector<bool> done(points.size(), false);
   std::size_t done_count = 0;
-  if (solver == Solver::Rk4 && groups.size() == all_scenes.size()) {
-    const auto ensembles = ensembles_of(all_scenes, groups);
-    run_ensembles(all_scenes, ensembles, jobs, stop, all_results);
+  if (solver == Solver::Rk4 && points.group.size() == points.size()) {
+    const auto ensembles = ensembles_of(points);
+    run_ensembles(points, ensembles, jobs, stop, all_results);
     for (const auto& members : ensembles)
       for (std::size_t i : members) done[i] = true;
     for (bool d : done) done_count += d;
     if (on_progress && done_count > 0) on_progress(done_count);
   }
   std::vector<std::size_t> rest;
-  for (std::size_t i = 0; i < all_scenes.size(); ++i)
+  for (std::size_t i = 0; i < points.size(); ++i)
     if (!done[i]) rest.push_back(i);
   if (rest.empty()) return all_results;
-  const auto& scenes = all_scenes;
   std::vector<FirstBreak> results(rest.size());
   ScheduledRuns runs;
   runs.count = rest.size();
   for (std::size_t i : rest) {
-    runs.beads.push_back(scenes[i].chain.beads);
-    runs.alone.push_back(scenes[i].chain.anharmonic() ? 1 : 0);
+    runs.beads.push_back(points.shared(i).chain.beads);
+    runs.alone.push_back(points.shared(i).chain.anharmonic() ? 1 : 0);
   }
   runs.lanes = solver == Solver::Rk4;
   runs.job = [&](std::size_t r) {
-    const SceneDesc& scene = scenes[rest[r]];
+    const SceneDesc scene = points.scene_of(rest[r]);
     LaneJob job;
     job.params = scene.chain;
     try {
@@ -172,12 +162,12 @@ std::vector<FirstBreak> sweep_first_breaks(const std::vector<SceneDesc>& all_sce
   };
   runs.lane_end = [&](std::size_t r, const LaneEnd& e) {
     // A value whose state stopped being finite runs again alone, for Integrator's message.
-    const SceneDesc& scene = scenes[rest[r]];
-    if (e.kind == LaneEnd::Kind::Failed) results[r] = sweep_first_break(scene, solver, stop);
+    if (e.kind == LaneEnd::Kind::Failed)
+      results[r] = sweep_first_break(points.scene_of(rest[r]), solver, stop);
     if (e.kind == LaneEnd::Kind::Broke) results[r] = {true, e.first.spring, e.first.tau};
   };
   runs.single = [&](std::size_t r) {
-    results[r] = sweep_first_break(scenes[rest[r]], solver, stop);
+    results[r] = sweep_first_break(points.scene_of(rest[r]), solver, stop);
   };
   std::function<void(std::size_t)> progress;
   if (on_progress) progress = [&](std::size_t n) { on_progress(done_count + n); };

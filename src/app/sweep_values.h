@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/solver.h"
+#include "app/sweep_points.h"
 #include "cluster/grid.h"
 #include "exact/first_break.h"
 #include "scene/scene.h"
@@ -24,20 +25,14 @@ void check_sweep_scene(const SceneDesc& scene, Solver solver);
 // The first break of one scene by RK4 (stopping at it) or by the exact solution.
 FirstBreak sweep_first_break(const SceneDesc& scene, Solver solver, const std::atomic<bool>* stop);
 
-// Points [first, first + count) of `grid` by the values of the axes that are not thresholds
-// (chain.seed, chain.threshold, chain.threshold_shape): points with the same id differ only in
-// their thresholds, so one RK4 run serves them all (physics/threshold_ensemble.h).
-std::vector<std::size_t> threshold_groups(const Grid& grid, std::size_t first, std::size_t count);
-
-// sweep_first_break of every scene on `jobs` threads (0: all cores), results in order.
-// `groups` (threshold_groups, or empty): scenes of one id whose chains differ only in their
-// thresholds run as one ensemble, each result still `run`'s on that scene bit for bit.
+// sweep_first_break of every point's scene on `jobs` threads (0: all cores), results in order.
+// Points of one group (SweepPoints::group) whose chains differ only in their thresholds run as
+// one ensemble, each result still `run`'s on that point's scene bit for bit.
 // Throws std::runtime_error with the first failure. When `stop` is set the remaining values
 // are skipped (their results stay default: the caller checks `stop`). `on_progress`, when
 // given, is called with the number of finished values from a watcher thread every 100 ms.
-std::vector<FirstBreak> sweep_first_breaks(const std::vector<SceneDesc>& scenes, Solver solver,
-                                           int jobs, const std::atomic<bool>* stop,
-                                           const std::function<void(std::size_t)>& on_progress,
-                                           const std::vector<std::size_t>& groups = {});
+std::vector<FirstBreak> sweep_first_breaks(const SweepPoints& points, Solver solver, int jobs,
+                                           const std::atomic<bool>* stop,
+                                           const std::function<void(std::size_t)>& on_progress);
 
 }  // namespace cb

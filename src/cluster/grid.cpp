@@ -48,6 +48,19 @@ std::vector<double> Grid::point(std::size_t index) const {
   return p;
 }
 
+std::size_t Grid::index_on(std::size_t index, const std::vector<bool>& kept) const {
+  std::size_t on = 0, stride = 1;
+  for (std::size_t k = axes.size(); k-- > 0;) {  // as point(): last axis fastest
+    const std::size_t n = axes[k].values.size();
+    if (kept[k]) {
+      on += index % n * stride;
+      stride *= n;
+    }
+    index /= n;
+  }
+  return on;
+}
+
 std::string Grid::csv_header() const {
   if (axes.size() == 1) return "value,spring,tau";
   std::string h;

@@ -28,6 +28,9 @@ struct Grid {
   std::size_t size() const;  // product of the axes' lengths (0 without axes)
   // The values of point `index` (< size()), one per axis.
   std::vector<double> point(std::size_t index) const;
+  // Point `index`'s place in the grid of the axes `kept` (kept[k] for axis k) alone: points
+  // with the same values on those axes share it.
+  std::size_t index_on(std::size_t index, const std::vector<bool>& kept) const;
   // CSV header: "value,spring,tau" for one axis (the historical header scripts read),
   // otherwise one column per key then "spring,tau".
   std::string csv_header() const;

@@ -36,12 +36,22 @@ double normal_cdf(double x) {
 
 }  // namespace
 
-double uniform_open01(std::uint64_t seed, std::uint64_t index) {
-  // The seed is mixed first, so that neighbouring seeds give unrelated streams, then the
-  // index on a Weyl step of its own.
-  const std::uint64_t bits =
-      mix(mix(seed + 0x9E3779B97F4A7C15ull) ^ (index * 0xD1B54A32D192ED03ull));
+namespace {
+
+// The seed is mixed first, so that neighbouring seeds give unrelated streams (once for all of a
+// chain's springs), then the index on a Weyl step of its own.
+std::uint64_t stream_of(std::uint64_t seed) {
+  return mix(seed + 0x9E3779B97F4A7C15ull);
+}
+double uniform_in(std::uint64_t stream, std::uint64_t index) {
+  const std::uint64_t bits = mix(stream ^ (index * 0xD1B54A32D192ED03ull));
   return (static_cast<double>(bits >> 11) + 0.5) * 0x1.0p-53;
+}
+
+}  // namespace
+
+double uniform_open01(std::uint64_t seed, std::uint64_t index) {
+  return uniform_in(stream_of(seed), index);
 }
 
 double weibull_quantile(double u, double shape) {
@@ -83,19 +93,26 @@ double normal_quantile(double p) {
 std::vector<double> draw_thresholds(ThresholdDist dist, double scale, double shape,
                                     std::uint64_t seed, int n) {
   std::vector<double> out(static_cast<std::size_t>(n));
+  draw_thresholds(dist, scale, shape, seed, n, out.data());
+  return out;
+}
+
+void draw_thresholds(ThresholdDist dist, double scale, double shape, std::uint64_t seed, int n,
+                     double* out) {
+  const auto count = static_cast<std::size_t>(n);
+  const std::uint64_t stream = stream_of(seed);
   if (dist == ThresholdDist::Weibull) {
-    for (int j = 1; j <= n; ++j) out[j - 1] = uniform_open01(seed, static_cast<std::uint64_t>(j));
-    weibull_quantiles(out.data(), out.size(), shape, out.data());
-    for (double& x : out) x *= scale;
-    return out;
+    for (int j = 1; j <= n; ++j) out[j - 1] = uniform_in(stream, static_cast<std::uint64_t>(j));
+    weibull_quantiles(out, count, shape, out);
+    for (std::size_t j = 0; j < count; ++j) out[j] *= scale;
+    return;
   }
   // Normal: z > -1/shape keeps 1 + shape z > 0; u is mapped into (Phi(-1/shape), 1).
   const double cut = normal_cdf(-1.0 / shape);
   for (int j = 1; j <= n; ++j) {
-    const double u = uniform_open01(seed, static_cast<std::uint64_t>(j));
+    const double u = uniform_in(stream, static_cast<std::uint64_t>(j));
     out[j - 1] = scale * (1.0 + shape * normal_quantile(cut + u * (1.0 - cut)));
   }
-  return out;
 }
 
 }  // namespace cb

@@ -46,5 +46,8 @@ double normal_quantile(double p);
 // standard normal truncated where 1 + shape z > 0 (shape: the relative standard deviation).
 std::vector<double> draw_thresholds(ThresholdDist dist, double scale, double shape,
                                     std::uint64_t seed, int n);
+// The same into out[0 .. n) (a sweep's 10^4 seeds redraw into one array, issue #23).
+void draw_thresholds(ThresholdDist dist, double scale, double shape, std::uint64_t seed, int n,
+                     double* out);
 
 }  // namespace cb

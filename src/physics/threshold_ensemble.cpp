@@ -38,9 +38,19 @@ SpringReaches spring_reaches_for_cpu() {
 
 // A hanging chain is integrated about its equilibrium with bounds shifted per spring
 // (coefficients.h); the members' thresholds are not shifted here, so it runs on its own.
+namespace {
+bool can_run(const ChainParams& chain, double lowest_threshold) {
+  return !chain.pull_string && !chain.hanging() && lowest_threshold > 0.0 &&
+         lowest_threshold < std::numeric_limits<double>::infinity();
+}
+}  // namespace
+
 bool ensemble_can_run(const ChainParams& member) {
-  return !member.pull_string && !member.hanging() && member.breakable() &&
-         member.min_threshold() > 0.0;
+  return can_run(member, member.min_threshold());
+}
+
+bool ensemble_can_run(const ChainParams& chain, const double* thresholds) {
+  return can_run(chain, *std::min_element(thresholds, thresholds + chain.beads));
 }
 
 bool ensemble_can_share(const ChainParams& a, const ChainParams& b) {

@@ -49,6 +49,8 @@ struct ThresholdEnsemble {
 // above zero.
 bool ensemble_can_share(const ChainParams& a, const ChainParams& b);
 bool ensemble_can_run(const ChainParams& member);
+// The same for `chain` with thresholds phi_c,j = thresholds[j - 1] (j = 1..N) instead of its own.
+bool ensemble_can_run(const ChainParams& chain, const double* thresholds);
 
 // Each member's first break (LaneEnd::Broke), none by last_step (Reached), or Failed when the
 // shared state stopped being finite before it broke (rerun it alone for Integrator's message).

@@ -36,22 +36,11 @@ py::dict sweep(const Scene& source, const py::dict& vary, const std::string& sol
   const Solver solver = parse_solver(solver_name);
   // Every point is set in memory on the scene read once, and checked before any work: a bad
   // value fails now, named by its key and value.
-  const SceneVariations variations = source.variations();
-  std::vector<SceneDesc> scenes;
-  scenes.reserve(grid.size());
-  std::vector<NumberSetting> settings;
-  for (std::size_t i = 0; i < grid.size(); ++i) {
-    const std::vector<double> p = grid.point(i);
-    settings.clear();
-    for (std::size_t k = 0; k < p.size(); ++k)
-      settings.push_back({grid.axes[k].key, p[k], grid.axes[k].spec + " = " + number_text(p[k])});
-    scenes.push_back(variations.with(settings));
-    check_sweep_scene(scenes.back(), solver);
-  }
-  const std::vector<FirstBreak> breaks = interruptible([&] {
-    return sweep_first_breaks(scenes, solver, jobs, &g_interrupted, {},
-                              threshold_groups(grid, 0, grid.size()));
-  });
+  const SweepPoints points = sweep_points(
+      source.variations(), grid, {0, grid.size()}, solver, jobs,
+      [](const GridAxis& axis, double v) { return axis.spec + " = " + number_text(v); });
+  const std::vector<FirstBreak> breaks =
+      interruptible([&] { return sweep_first_breaks(points, solver, jobs, &g_interrupted, {}); });
   if (g_interrupted) {  // stopped from elsewhere (another call saw Ctrl-C)
     PyErr_SetNone(PyExc_KeyboardInterrupt);
     throw py::error_already_set();

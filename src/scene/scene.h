@@ -50,9 +50,9 @@ inline constexpr double kMaxFps = 240.0;
 
 // [render]: how frames and videos of the scene look. Validated here; the renderer reads it.
 struct RenderDesc {
-  int width = 1280, height = 720;     // pixels
-  double fps = 30.0;                  // frames per second of video
-  double speed = 10.0;                // tau per second of video
+  int width = 1280, height = 720;  // pixels
+  double fps = 30.0;               // frames per second of video
+  double speed = 10.0;             // tau per second of video
   // longitudinal | transverse | both | vertical; without render.view: vertical for a hanging
   // chain (chain.gravity > 0, issue #22), longitudinal otherwise.
   std::string view = "longitudinal";
@@ -103,7 +103,7 @@ class KeyOrigins {
   }
 
  private:
-  std::shared_ptr<const Map> read_;                         // the reader's, shared by copies
+  std::shared_ptr<const Map> read_;                       // the reader's, shared by copies
   std::vector<std::pair<std::string, std::string>> set_;  // set since; looked up first
 };
 
@@ -156,6 +156,11 @@ inline std::int64_t planned_steps(const SceneDesc& scene) {
 // "<where the key came from>: <what is wrong>; <how to fix it>", numbers shown in the scene's
 // own units (seconds and newtons for input = "si").
 void validate(const SceneDesc& scene);
+// validate() for a scene that passed it before its thresholds were drawn anew (a new
+// chain.seed, issue #23): only the checks that read thresholds run again, the chain's and, for
+// anharmonic springs, the step's (linearised below the threshold). Its message may be briefer
+// than validate()'s: a caller that shows one runs validate().
+void validate_new_thresholds(const SceneDesc& scene);
 
 // Sets one numeric key as a scene file would give it (in the scene's units, converted to
 // Eq. (dimless) form), records `origin` as where the value came from, and validates the
@@ -167,6 +172,12 @@ void validate(const SceneDesc& scene);
 bool set_scene_number(SceneDesc& scene, const std::string& key, double value,
                       const std::string& origin);
 // Several keys at once, validated once they are all set (a grid point of `sweep`).
+// A new chain.seed for a scene whose thresholds are drawn (issue #23), drawn as the reader
+// draws them into the chain's array (its storage reused: a sweep redraws 10^4 seeds in one
+// scene), `threshold` their smallest. False, the scene unchanged, when it draws none or the
+// reader refuses the value (the text, read again, then says why). Not validated.
+bool redraw_thresholds(SceneDesc& scene, double seed);
+
 struct NumberSetting {
   std::string key;
   double value;

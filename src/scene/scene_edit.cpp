@@ -77,19 +77,9 @@ bool assign_number(SceneDesc& next, const std::string& key, double value,
       (key == "chain.threshold" && !chain.thresholds.empty()))
     return false;
   if (key == "chain.seed") {
-    // A new seed of drawn thresholds (issue #23): drawn here as the reader draws them, so a
-    // sweep over 10^4 seeds does not parse the file 10^4 times. Without threshold_dist, or for a
-    // value the reader refuses, the text is read again and the reader says why.
-    if (!next.threshold_draw || value < 0.0 || value != std::floor(value) || value > 9.0e15)
-      return false;
-    ThresholdDraw& draw = *next.threshold_draw;
-    draw.seed = static_cast<std::int64_t>(value);
-    const auto dist = draw.dist == "normal" ? ThresholdDist::Normal : ThresholdDist::Weibull;
-    ChainParams& p = next.chain;
-    p.thresholds = draw_thresholds(dist, draw.scale, draw.shape,
-                                   static_cast<std::uint64_t>(draw.seed), p.beads);
-    p.threshold = *std::min_element(p.thresholds.begin(), p.thresholds.end());
-    p.normalize();
+    // Drawn here as the reader draws them, so a sweep over 10^4 seeds does not parse the file
+    // 10^4 times.
+    if (!redraw_thresholds(next, value)) return false;
   } else if (key == "chain.beads") {
     next.chain.beads = whole(key, value, origin);
   } else if (key == "render.width") {
@@ -115,6 +105,21 @@ bool assign_number(SceneDesc& next, const std::string& key, double value,
 }
 
 }  // namespace
+
+bool redraw_thresholds(SceneDesc& scene, double seed) {
+  if (!scene.threshold_draw || seed < 0.0 || seed != std::floor(seed) || seed > 9.0e15)
+    return false;
+  ThresholdDraw& draw = *scene.threshold_draw;
+  draw.seed = static_cast<std::int64_t>(seed);
+  ChainParams& p = scene.chain;
+  p.thresholds.resize(static_cast<std::size_t>(p.beads));
+  draw_thresholds(draw.dist == "normal" ? ThresholdDist::Normal : ThresholdDist::Weibull,
+                  draw.scale, draw.shape, static_cast<std::uint64_t>(draw.seed), p.beads,
+                  p.thresholds.data());
+  p.threshold = *std::min_element(p.thresholds.begin(), p.thresholds.end());
+  p.normalize();
+  return true;
+}
 
 bool set_scene_number(SceneDesc& scene, const std::string& key, double value,
                       const std::string& origin) {

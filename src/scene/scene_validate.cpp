@@ -68,8 +68,8 @@ class Checker {
   // "section.key" -> where its value came from, or its section's start for a default.
   std::string where(const std::string& key) const {
     const KeyOrigins& o = scene_.origins;
-    for (std::string_view k : {std::string_view(key), std::string_view(key).substr(0, key.find('.')),
-                               std::string_view()})
+    for (std::string_view k : {std::string_view(key),
+                               std::string_view(key).substr(0, key.find('.')), std::string_view()})
       if (const std::string* where = o.find(k)) return *where;
     return {};
   }
@@ -515,6 +515,17 @@ void check_values(const SceneDesc& scene, Problems& problems) {
 void validate(const SceneDesc& scene) {
   scene_detail::Problems problems;
   scene_detail::check_values(scene, problems);
+  problems.throw_if_any();
+}
+
+void validate_new_thresholds(const SceneDesc& scene) {
+  // Keep in step with check_values: of its checks only Checker::chain() (the thresholds
+  // themselves, the hanging chain's weight, the anharmonic springs' reach) and
+  // Checker::integrator() (stability_limit) read them (tests/test_sweep_scenes.cpp compares).
+  scene_detail::Problems problems;
+  const Checker check(scene, problems);
+  check.chain();
+  if (scene.chain.anharmonic()) check.integrator();
   problems.throw_if_any();
 }
 

@@ -43,10 +43,11 @@ void BM_SweepScenes(benchmark::State& state) {
 void sweep(benchmark::State& state, const std::string& solver_name) {
   const cb::Solver solver = cb::parse_solver(solver_name);
   const auto scenes = sweep_scenes();
+  const cb::SweepPoints points = cb::points_of(scenes);
   const int jobs = static_cast<int>(state.range(0));
   int broke = 0;
   for (auto _ : state) {
-    const auto results = cb::sweep_first_breaks(scenes, solver, jobs, nullptr, {});
+    const auto results = cb::sweep_first_breaks(points, solver, jobs, nullptr, {});
     broke = 0;
     for (const auto& r : results) broke += r.broke;
   }
@@ -63,11 +64,13 @@ void BM_SweepExact(benchmark::State& state) {
 // The values one by one through Integrator (what the rk4 sweep did before lanes).
 void BM_SweepRk4Single(benchmark::State& state) {
   const auto scenes = sweep_scenes();
+  const cb::SweepPoints points = cb::points_of(scenes);
   const int jobs = static_cast<int>(state.range(0));
   for (auto _ : state) {
     const auto results =
         cb::parallel_first_breaks(static_cast<int>(scenes.size()), jobs, [&](int i) {
-          return cb::sweep_first_break(scenes[static_cast<std::size_t>(i)], cb::Solver::Rk4, nullptr);
+          return cb::sweep_first_break(scenes[static_cast<std::size_t>(i)], cb::Solver::Rk4,
+                                       nullptr);
         });
     benchmark::DoNotOptimize(results.data());
   }

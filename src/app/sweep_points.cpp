@@ -1,0 +1,186 @@
+#include "app/sweep_points.h"
+
+#include <algorithm>
+#include <exception>
+#include <limits>
+#include <optional>
+#include <thread>
+#include <unordered_map>
+
+#include "app/sweep_values.h"  // check_sweep_scene
+
+namespace cb {
+
+namespace {
+
+constexpr double kNoSeed = std::numeric_limits<double>::quiet_NaN();
+
+bool is_threshold_key(const std::string& key) {
+  return key == "chain.seed" || key == "chain.threshold" || key == "chain.threshold_shape";
+}
+
+// Work on `count` items on up to `jobs` threads (0: all cores), each a contiguous slice of at
+// least `per_thread` with its own copy of `work`. `work(i)` throws for a bad item; each slice
+// stops at its first, and the first in order is rethrown, as one thread would have.
+template <class Work>
+void in_slices(std::size_t count, int jobs, std::size_t per_thread, const Work& work) {
+  const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
+  const std::size_t threads = std::clamp<std::size_t>(
+      std::min(jobs > 0 ? static_cast<std::size_t>(jobs) : cores, count / per_thread), 1,
+      std::max<std::size_t>(count, 1));
+  std::vector<std::size_t> first_bad(threads, count);
+  std::vector<std::exception_ptr> errors(threads);
+  auto slice = [&](std::size_t t) {
+    Work mine = work;
+    for (std::size_t i = count * t / threads; i < count * (t + 1) / threads; ++i) {
+      try {
+        mine(i);
+      } catch (...) {
+        first_bad[t] = i;
+        errors[t] = std::current_exception();
+        return;
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(slice, t);
+  slice(0);
+  for (auto& t : pool) t.join();
+  const auto bad = std::min_element(first_bad.begin(), first_bad.end());
+  if (*bad < count)
+    std::rethrow_exception(errors[static_cast<std::size_t>(bad - first_bad.begin())]);
+}
+
+// On the sweep's threads, 512 points or more each (10^4 seeds are 3 x 10^5 threshold draws).
+constexpr std::size_t kPointsPerThread = 512;
+
+}  // namespace
+
+SceneDesc SweepPoints::scene_of(std::size_t i) const {
+  SceneDesc s = shared(i);
+  // The seed's own thresholds, drawn as its point was (the rare point that runs alone).
+  if (owns_thresholds(i)) redraw_thresholds(s, seed[i]);
+  return s;
+}
+
+void SweepPoints::thresholds_of(std::size_t i, double* out) const {
+  const ChainParams& chain = shared(i).chain;
+  const auto n = static_cast<std::size_t>(chain.beads);
+  if (owns_thresholds(i))
+    std::copy_n(thresholds.begin() + static_cast<std::ptrdiff_t>(own[i]), n, out);
+  else
+    for (std::size_t j = 0; j < n; ++j) out[j] = chain.threshold_of(static_cast<int>(j) + 1);
+}
+
+SweepPoints points_of(std::vector<SceneDesc> scenes) {
+  SweepPoints p;
+  const std::size_t n = scenes.size();
+  p.scenes = std::move(scenes);
+  p.scene.resize(n);
+  for (std::size_t i = 0; i < n; ++i) p.scene[i] = static_cast<std::uint32_t>(i);
+  p.seed.assign(n, kNoSeed);
+  p.own.assign(n, 0);
+  return p;
+}
+
+std::vector<std::size_t> threshold_groups(const Grid& grid, std::size_t first, std::size_t count) {
+  std::vector<bool> kept;
+  for (const auto& axis : grid.axes) kept.push_back(!is_threshold_key(axis.key));
+  std::vector<std::size_t> out(count);
+  for (std::size_t i = 0; i < count; ++i) out[i] = grid.index_on(first + i, kept);
+  return out;
+}
+
+SweepPoints sweep_points(const SceneVariations& variations, const Grid& grid, PointRange range,
+                         Solver solver, int jobs, const ValueOrigin& origin) {
+  const std::size_t count = range.size();
+  // Point i's scene as the scene file and the grid give it, checked.
+  const auto whole_scene = [&](std::size_t i) {
+    const auto values = grid.point(range.first + i);
+    std::vector<NumberSetting> settings;
+    for (std::size_t k = 0; k < values.size(); ++k)
+      settings.push_back({grid.axes[k].key, values[k], origin(grid.axes[k], values[k])});
+    SceneDesc scene = variations.with(settings);
+    check_sweep_scene(scene, solver);
+    return scene;
+  };
+  const auto seed_axis = static_cast<std::size_t>(
+      std::find_if(grid.axes.begin(), grid.axes.end(),
+                   [](const GridAxis& a) { return a.key == "chain.seed"; }) -
+      grid.axes.begin());
+  if (seed_axis == grid.axes.size()) {
+    std::vector<SceneDesc> scenes(count);
+    in_slices(count, jobs, kPointsPerThread, [&](std::size_t i) { scenes[i] = whole_scene(i); });
+    SweepPoints p = points_of(std::move(scenes));
+    p.group = threshold_groups(grid, range.first, count);
+    return p;
+  }
+  // Seeds: one scene for each set of the other axes' values (the first point of each, built
+  // whole), each point then its seed's thresholds drawn into it and the scene checked again.
+  SweepPoints p;
+  p.scene.resize(count);
+  p.seed.resize(count);
+  p.own.resize(count);
+  p.group = threshold_groups(grid, range.first, count);
+  std::vector<bool> kept(grid.axes.size(), true);
+  kept[seed_axis] = false;
+  const std::vector<double>& seeds = grid.axes[seed_axis].values;
+  std::size_t seed_stride = 1;  // the seed axis's step in the point index (the last is fastest)
+  for (std::size_t k = seed_axis + 1; k < grid.axes.size(); ++k)
+    seed_stride *= grid.axes[k].values.size();
+  std::unordered_map<std::size_t, std::uint32_t> scene_of_others;
+  std::vector<std::size_t> first_point;  // of each scene
+  for (std::size_t i = 0; i < count; ++i) {
+    const auto [at, added] = scene_of_others.try_emplace(
+        grid.index_on(range.first + i, kept), static_cast<std::uint32_t>(first_point.size()));
+    if (added) first_point.push_back(i);
+    p.scene[i] = at->second;
+    p.seed[i] = seeds[(range.first + i) / seed_stride % seeds.size()];
+  }
+  // A scene that fails is its first point's error, the first of its points; the others of
+  // such a scene wait for it.
+  std::vector<std::exception_ptr> scene_error(first_point.size());
+  p.scenes.resize(first_point.size());
+  in_slices(first_point.size(), jobs, 1, [&](std::size_t s) {
+    try {
+      p.scenes[s] = whole_scene(first_point[s]);
+    } catch (...) {
+      scene_error[s] = std::current_exception();
+    }
+  });
+  std::size_t next = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    p.own[i] = next;
+    next += static_cast<std::size_t>(p.scenes[p.scene[i]].chain.beads);
+  }
+  p.thresholds.resize(next);
+  constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+  in_slices(
+      count, jobs, kPointsPerThread,
+      [&, scratch = std::optional<SceneDesc>{}, scratch_of = kNone](std::size_t i) mutable {
+        const std::uint32_t s = p.scene[i];
+        if (scene_error[s]) std::rethrow_exception(scene_error[s]);
+        // The scene copied once a run of points (a slice's points mostly share one).
+        if (!scratch || scratch_of != s) {
+          scratch = p.scenes[s];
+          scratch_of = s;
+        }
+        SceneDesc& scene = *scratch;
+        try {
+          if (!redraw_thresholds(scene, p.seed[i])) {
+            scene = whole_scene(i);  // the reader says why, or takes it after all
+            scratch_of = kNone;
+          } else {
+            validate_new_thresholds(scene);  // the scene's other values passed with its first point
+          }
+        } catch (const SceneError&) {
+          whole_scene(i);  // the same error, its value named by origin
+          throw;
+        }
+        for (int j = 1; j <= scene.chain.beads; ++j)
+          p.thresholds[p.own[i] + static_cast<std::size_t>(j - 1)] = scene.chain.threshold_of(j);
+      });
+  return p;
+}
+
+}  // namespace cb
