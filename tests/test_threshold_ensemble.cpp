@@ -44,8 +44,10 @@ int check_members(const cb::ChainParams& shared, const std::vector<cb::ChainPara
   e.forcing = cb::make_forcing(drive);
   e.dt = dt;
   e.last_step = last_step;
+  std::vector<double> phi;
   for (const auto& m : members)
-    for (int j = 1; j <= m.beads; ++j) e.thresholds.push_back(m.threshold_of(j));
+    for (int j = 1; j <= m.beads; ++j) phi.push_back(m.threshold_of(j));
+  e.thresholds = phi;
   const std::vector<cb::LaneEnd> ends = cb::ensemble_first_breaks(e);
   REQUIRE(ends.size() == members.size());
   int broke = 0;
@@ -302,10 +304,12 @@ TEST_CASE("an ensemble shared out on threads gives every member the same bits",
   e.forcing = cb::make_forcing(drive);
   e.dt = dt;
   e.last_step = last;
+  std::vector<double> phi;
   for (int seed = 1; seed <= count; ++seed) {
     const cb::ChainParams p = flawed(seed, 6.0);
-    e.thresholds.insert(e.thresholds.end(), p.thresholds.begin(), p.thresholds.end());
+    phi.insert(phi.end(), p.thresholds.begin(), p.thresholds.end());
   }
+  e.thresholds = phi;
   const std::vector<cb::LaneEnd> one = cb::ensemble_first_breaks(e, nullptr, 1);
   REQUIRE(one.size() == static_cast<std::size_t>(count));
   for (const int workers : {2, 3}) {

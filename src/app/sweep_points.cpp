@@ -67,9 +67,18 @@ void SweepPoints::thresholds_of(std::size_t i, double* out) const {
   const ChainParams& chain = shared(i).chain;
   const auto n = static_cast<std::size_t>(chain.beads);
   if (owns_thresholds(i))
-    std::copy_n(thresholds.begin() + static_cast<std::ptrdiff_t>(own[i]), n, out);
+    std::copy_n(thresholds.get() + own[i], n, out);
   else
     for (std::size_t j = 0; j < n; ++j) out[j] = chain.threshold_of(static_cast<int>(j) + 1);
+}
+
+const double* SweepPoints::thresholds_in_order(const std::vector<std::size_t>& members) const {
+  if (members.empty() || !owns_thresholds(members.front())) return nullptr;
+  const auto n = static_cast<std::size_t>(shared(members.front()).chain.beads);
+  for (std::size_t k = 0; k < members.size(); ++k)
+    if (!owns_thresholds(members[k]) || own[members[k]] != own[members.front()] + k * n)
+      return nullptr;
+  return thresholds.get() + own[members.front()];
 }
 
 SweepPoints points_of(std::vector<SceneDesc> scenes) {
@@ -153,7 +162,7 @@ SweepPoints sweep_points(const SceneVariations& variations, const Grid& grid, Po
     p.own[i] = next;
     next += static_cast<std::size_t>(p.scenes[p.scene[i]].chain.beads);
   }
-  p.thresholds.resize(next);
+  p.thresholds.reset(new double[next]);
   constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
   in_slices(
       count, jobs, kPointsPerThread,

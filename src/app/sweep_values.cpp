@@ -90,10 +90,18 @@ void run_ensembles(const SweepPoints& points,
         }
         e.dt = first.integrator.dt;
         e.last_step = planned_steps(first);
+        // The members' thresholds in place where they lie in order (seeds along the last or
+        // only axis), else gathered.
         const auto n = static_cast<std::size_t>(first.chain.beads);
-        e.thresholds.resize(members.size() * n);
-        for (std::size_t k = 0; k < members.size(); ++k)
-          points.thresholds_of(members[k], e.thresholds.data() + k * n);
+        std::vector<double> gathered;
+        if (const double* in_order = points.thresholds_in_order(members)) {
+          e.thresholds = {in_order, members.size() * n};
+        } else {
+          gathered.resize(members.size() * n);
+          for (std::size_t k = 0; k < members.size(); ++k)
+            points.thresholds_of(members[k], gathered.data() + k * n);
+          e.thresholds = gathered;
+        }
         const std::vector<LaneEnd> ends = ensemble_first_breaks(e, stop, workers);
         for (std::size_t k = 0; k < members.size(); ++k) {
           const std::size_t i = members[k];

@@ -57,7 +57,7 @@ FlawMapData flaw_map_data(const FigureOptions& o, int betas, int seeds) {
     // The weakest of 30 Weibull(4) springs lies below 1 for every seed; f = beta tau reaches
     // twice that long before the search ends.
     e.last_step = static_cast<std::int64_t>(std::ceil((2.0 / beta + 8.0 * kMapBeads) / o.dt));
-    e.thresholds = thresholds;
+    e.thresholds = thresholds;  // every beta's the same seeds, read in place
     const std::vector<LaneEnd> ends = ensemble_first_breaks(e, o.stop);
     for (const LaneEnd& end : ends) {
       if (end.kind != LaneEnd::Kind::Broke) {

@@ -42,16 +42,26 @@ cb::DriveDesc drive_of(double beta) {
   return d;
 }
 
+// Seeds 1..kSeeds' thresholds, drawn once (the ensembles read them in place).
+const std::vector<double>& all_thresholds() {
+  static const std::vector<double> phi = [] {
+    std::vector<double> v;
+    for (int s = 1; s <= kSeeds; ++s) {
+      const cb::ChainParams p = chain_of(s);
+      v.insert(v.end(), p.thresholds.begin(), p.thresholds.end());
+    }
+    return v;
+  }();
+  return phi;
+}
+
 cb::ThresholdEnsemble ensemble_of(double beta) {
   cb::ThresholdEnsemble e;
   e.chain = chain_of(1);
   e.forcing = cb::make_forcing(drive_of(beta));
   e.dt = kDt;
   e.last_step = std::llround(kTEnd / kDt);
-  for (int s = 1; s <= kSeeds; ++s) {
-    const cb::ChainParams p = chain_of(s);
-    e.thresholds.insert(e.thresholds.end(), p.thresholds.begin(), p.thresholds.end());
-  }
+  e.thresholds = all_thresholds();
   return e;
 }
 
