@@ -12,6 +12,7 @@
 
 #include "app/csv.h"
 #include "app/sweep_setup.h"
+#include "app/sweep_values.h"
 #include "scene/scene_writer.h"
 
 namespace fs = std::filesystem;
@@ -158,5 +159,46 @@ TEST_CASE("a sweep over seeds shares one scene and gives each point its own, or 
         CHECK(e.what() == first_error);
       }
     }
+  }
+}
+
+TEST_CASE("a sweep's seed points and breaks on two threads are those of one", "[sweep][points]") {
+  // 2048 seeds a beta: each slice of 512 or more points its own thread (sweep_points.cpp), one
+  // beta's ensemble in two parts, two betas' ensembles side by side (sweep_values.cpp). Run
+  // under ThreadSanitizer too (tests/ci/sanitizers.sh, TSAN_TESTS).
+  for (const auto& axes : std::vector<std::vector<std::string>>{
+           {"--vary chain.seed=1:2048:2048"},
+           {"--values drive.beta=0.05,0.2", "--vary chain.seed=1:2048:2048"}}) {
+    INFO(axes.front());
+    cb::SweepOptions o;
+    o.scene = std::string(CHAINBREAK_SCENES) + "/flawed_chain.toml";
+    o.axes = axes;
+    const cb::Grid grid = cb::sweep_grid(o);
+    o.jobs = 1;
+    const cb::SweepPoints one = cb::sweep_points(o, grid, {0, grid.size()});
+    o.jobs = 2;
+    const cb::SweepPoints two = cb::sweep_points(o, grid, {0, grid.size()});
+    REQUIRE(one.size() == grid.size());
+    REQUIRE(two.size() == grid.size());
+    CHECK(two.scenes.size() == grid.size() / 2048);
+    std::size_t same = 0;
+    std::vector<double> a(30), b(30);
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+      one.thresholds_of(i, a.data());
+      two.thresholds_of(i, b.data());
+      same += a == b && one.seed[i] == two.seed[i] && one.group[i] == two.group[i];
+    }
+    CHECK(same == grid.size());
+    const auto breaks_one = cb::sweep_first_breaks(one, cb::Solver::Rk4, 1, nullptr, {});
+    const auto breaks_two = cb::sweep_first_breaks(two, cb::Solver::Rk4, 2, nullptr, {});
+    std::size_t equal = 0, broke = 0;
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+      broke += breaks_one[i].broke;
+      equal += breaks_one[i].broke == breaks_two[i].broke &&
+               breaks_one[i].spring == breaks_two[i].spring &&
+               breaks_one[i].tau == breaks_two[i].tau;
+    }
+    CHECK(broke == grid.size());
+    CHECK(equal == grid.size());
   }
 }
