@@ -202,3 +202,16 @@ TEST_CASE("a sweep's seed points and breaks on two threads are those of one", "[
     CHECK(equal == grid.size());
   }
 }
+
+TEST_CASE("a value the scene's text refuses is named by the option that gave it",
+          "[sweep][scene][flaws]") {
+  // chain.seed = 2.5 is refused by the reader (the text read again with the value as an
+  // override), which names it "--set chain.seed=2.5"; the sweep names its option and value.
+  cb::SweepOptions o;
+  o.scene = std::string(CHAINBREAK_SCENES) + "/flawed_chain.toml";
+  o.axes = {"--values chain.seed=3,2.5"};
+  const cb::Grid grid = cb::sweep_grid(o);
+  CHECK_THROWS_WITH(cb::sweep_points(o, grid, {0, grid.size()}),
+                    Catch::StartsWith("--values chain.seed=3,2.5 (value 2.5): chain.seed must be "
+                                      "an integer"));
+}

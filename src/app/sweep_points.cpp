@@ -51,6 +51,17 @@ void in_slices(std::size_t count, int jobs, std::size_t per_thread, const Work& 
     std::rethrow_exception(errors[static_cast<std::size_t>(bad - first_bad.begin())]);
 }
 
+// A value the text, read again, refuses is named "--set KEY=VALUE" (the reader takes it as an
+// override): name it as the user gave it, by its origin.
+std::string named_by_origin(const std::string& what, const std::vector<NumberSetting>& settings) {
+  for (const NumberSetting& s : settings) {
+    const std::string set = "--set " + s.key + "=";
+    const auto colon = what.find(": ");
+    if (what.rfind(set, 0) == 0 && colon != std::string::npos) return s.origin + what.substr(colon);
+  }
+  return what;
+}
+
 // On the sweep's threads, 512 points or more each (10^4 seeds are 3 x 10^5 threshold draws).
 constexpr std::size_t kPointsPerThread = 512;
 
@@ -109,7 +120,12 @@ SweepPoints sweep_points(const SceneVariations& variations, const Grid& grid, Po
     std::vector<NumberSetting> settings;
     for (std::size_t k = 0; k < values.size(); ++k)
       settings.push_back({grid.axes[k].key, values[k], origin(grid.axes[k], values[k])});
-    SceneDesc scene = variations.with(settings);
+    SceneDesc scene;
+    try {
+      scene = variations.with(settings);
+    } catch (const SceneError& e) {
+      throw SceneError(named_by_origin(e.what(), settings));
+    }
     check_sweep_scene(scene, solver);
     return scene;
   };
