@@ -4,9 +4,11 @@
 #include <exception>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 #include <thread>
 #include <unordered_map>
 
+#include "app/csv.h"           // number_text
 #include "app/sweep_values.h"  // check_sweep_scene
 
 namespace cb {
@@ -176,7 +178,8 @@ SweepPoints sweep_points(const SceneVariations& variations, const Grid& grid, Po
   std::size_t next = 0;
   for (std::size_t i = 0; i < count; ++i) {
     p.own[i] = next;
-    next += static_cast<std::size_t>(p.scenes[p.scene[i]].chain.beads);
+    if (!scene_error[p.scene[i]])
+      next += static_cast<std::size_t>(p.scenes[p.scene[i]].chain.beads);
   }
   p.thresholds.reset(new double[next]);
   constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
@@ -193,11 +196,11 @@ SweepPoints sweep_points(const SceneVariations& variations, const Grid& grid, Po
         SceneDesc& scene = *scratch;
         try {
           if (!redraw_thresholds(scene, p.seed[i])) {
-            scene = whole_scene(i);  // the reader says why, or takes it after all
-            scratch_of = kNone;
-          } else {
-            validate_new_thresholds(scene);  // the scene's other values passed with its first point
+            whole_scene(i);  // the reader refuses the seeds redraw_thresholds does, and says why
+            throw std::logic_error("chain.seed = " + number_text(p.seed[i]) +
+                                   ": the scene reader takes a seed redraw_thresholds refuses");
           }
+          validate_new_thresholds(scene);  // the scene's other values passed with its first point
         } catch (const SceneError&) {
           whole_scene(i);  // the same error, its value named by origin
           throw;

@@ -39,12 +39,16 @@ namespace {
 // (one group: the same values of every other key), step and end.
 std::vector<std::vector<std::size_t>> ensembles_of(const SweepPoints& points) {
   std::map<std::size_t, std::vector<std::size_t>> by_group;
+  std::vector<std::size_t>* run_of_group = nullptr;  // consecutive points share a group: one lookup
   std::vector<double> row;
   for (std::size_t i = 0; i < points.size(); ++i) {
     const ChainParams& chain = points.shared(i).chain;
     row.resize(static_cast<std::size_t>(chain.beads));
     points.thresholds_of(i, row.data());
-    if (ensemble_can_run(chain, row.data())) by_group[points.group[i]].push_back(i);
+    if (!ensemble_can_run(chain, row.data())) continue;
+    if (!run_of_group || points.group[i] != points.group[run_of_group->back()])
+      run_of_group = &by_group[points.group[i]];
+    run_of_group->push_back(i);
   }
   std::vector<std::vector<std::size_t>> out;
   for (auto& [id, members] : by_group) {
