@@ -177,6 +177,9 @@ bool set_scene_number(SceneDesc& scene, const std::string& key, double value,
 // scene), `threshold` their smallest. False, the scene unchanged, when it draws none or the
 // reader refuses the value (the text, read again, then says why). Not validated.
 bool redraw_thresholds(SceneDesc& scene, double seed);
+// The thresholds `draw` gives a chain of `beads` springs, into out[0 .. beads): the reader's,
+// redraw_thresholds' and the writer's one way from a ThresholdDraw to numbers.
+void draw_thresholds_into(const ThresholdDraw& draw, int beads, double* out);
 
 struct NumberSetting {
   std::string key;

@@ -106,6 +106,11 @@ bool assign_number(SceneDesc& next, const std::string& key, double value,
 
 }  // namespace
 
+void draw_thresholds_into(const ThresholdDraw& draw, int beads, double* out) {
+  draw_thresholds(draw.dist == "normal" ? ThresholdDist::Normal : ThresholdDist::Weibull,
+                  draw.scale, draw.shape, static_cast<std::uint64_t>(draw.seed), beads, out);
+}
+
 bool redraw_thresholds(SceneDesc& scene, double seed) {
   if (!scene.threshold_draw || seed < 0.0 || seed != std::floor(seed) || seed > 9.0e15)
     return false;
@@ -113,9 +118,7 @@ bool redraw_thresholds(SceneDesc& scene, double seed) {
   draw.seed = static_cast<std::int64_t>(seed);
   ChainParams& p = scene.chain;
   p.thresholds.resize(static_cast<std::size_t>(p.beads));
-  draw_thresholds(draw.dist == "normal" ? ThresholdDist::Normal : ThresholdDist::Weibull,
-                  draw.scale, draw.shape, static_cast<std::uint64_t>(draw.seed), p.beads,
-                  p.thresholds.data());
+  draw_thresholds_into(draw, p.beads, p.thresholds.data());
   p.threshold = *std::min_element(p.thresholds.begin(), p.thresholds.end());
   p.normalize();
   return true;

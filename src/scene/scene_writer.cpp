@@ -4,7 +4,6 @@
 #include <filesystem>
 #include <sstream>
 
-#include "physics/threshold_draw.h"
 #include "scene/scene_coefficients.h"
 #include "scene/scene_reader.h"
 
@@ -47,8 +46,9 @@ std::string numbers(const std::vector<double>& values) {
 }
 
 std::vector<double> drawn(const ThresholdDraw& t, int beads) {
-  return draw_thresholds(t.dist == "normal" ? ThresholdDist::Normal : ThresholdDist::Weibull,
-                         t.scale, t.shape, static_cast<std::uint64_t>(t.seed), beads);
+  std::vector<double> out(static_cast<std::size_t>(beads));
+  draw_thresholds_into(t, beads, out.data());
+  return out;
 }
 
 void write_drive(std::ostringstream& out, const SceneDesc& scene) {
