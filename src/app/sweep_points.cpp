@@ -21,25 +21,30 @@ bool is_threshold_key(const std::string& key) {
   return key == "chain.seed" || key == "chain.threshold" || key == "chain.threshold_shape";
 }
 
+// A bad item: its index and what it threw.
+struct Failure {
+  std::size_t item;
+  std::exception_ptr error;
+};
+
 // Work on `count` items on up to `jobs` threads (0: all cores), each a contiguous slice of at
 // least `per_thread` with its own copy of `work`. `work(i)` throws for a bad item; each slice
-// stops at its first, and the first in order is rethrown, as one thread would have.
+// stops at its first, and the first in order is returned, as one thread would have found it.
 template <class Work>
-void in_slices(std::size_t count, int jobs, std::size_t per_thread, const Work& work) {
+std::optional<Failure> first_failure(std::size_t count, int jobs, std::size_t per_thread,
+                                     const Work& work) {
   const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
   const std::size_t threads = std::clamp<std::size_t>(
       std::min(jobs > 0 ? static_cast<std::size_t>(jobs) : cores, count / per_thread), 1,
       std::max<std::size_t>(count, 1));
-  std::vector<std::size_t> first_bad(threads, count);
-  std::vector<std::exception_ptr> errors(threads);
+  std::vector<std::optional<Failure>> failures(threads);
   auto slice = [&](std::size_t t) {
     Work mine = work;
     for (std::size_t i = count * t / threads; i < count * (t + 1) / threads; ++i) {
       try {
         mine(i);
       } catch (...) {
-        first_bad[t] = i;
-        errors[t] = std::current_exception();
+        failures[t] = Failure{i, std::current_exception()};
         return;
       }
     }
@@ -48,9 +53,15 @@ void in_slices(std::size_t count, int jobs, std::size_t per_thread, const Work& 
   for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(slice, t);
   slice(0);
   for (auto& t : pool) t.join();
-  const auto bad = std::min_element(first_bad.begin(), first_bad.end());
-  if (*bad < count)
-    std::rethrow_exception(errors[static_cast<std::size_t>(bad - first_bad.begin())]);
+  for (auto& f : failures)
+    if (f) return f;
+  return std::nullopt;
+}
+
+// The same, the first bad item's error rethrown.
+template <class Work>
+void in_slices(std::size_t count, int jobs, std::size_t per_thread, const Work& work) {
+  if (const auto f = first_failure(count, jobs, per_thread, work)) std::rethrow_exception(f->error);
 }
 
 // A value the text, read again, refuses is named "--set KEY=VALUE" (the reader takes it as an
@@ -175,39 +186,81 @@ SweepPoints sweep_points(const SceneVariations& variations, const Grid& grid, Po
       scene_error[s] = std::current_exception();
     }
   });
+  // A seed's thresholds depend on the draw and N alone (draws_alike): scenes that draw alike (a
+  // beta x seed grid's) share each seed's row of thresholds, drawn by the first of its points
+  // (its drawer) and only checked with the others' scenes.
+  constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+  std::vector<std::size_t> draw_of(p.scenes.size());  // the first scene drawing alike
+  std::vector<std::size_t> draws;                     // the first of each draw
+  for (std::size_t s = 0; s < p.scenes.size(); ++s) {
+    const auto alike = std::find_if(draws.begin(), draws.end(), [&](std::size_t t) {
+      return !scene_error[s] && draws_alike(p.scenes[t], p.scenes[s]);
+    });
+    draw_of[s] = alike != draws.end() ? *alike : s;
+    if (alike == draws.end() && !scene_error[s]) draws.push_back(s);
+  }
+  // Each row's drawer, by draw and seed index; a point of a failed scene is its own drawer (it
+  // rethrows the scene's error).
+  std::unordered_map<std::size_t, std::vector<std::size_t>> drawer_of_seed;
+  std::vector<std::size_t> drawer(count);
   std::size_t next = 0;
   for (std::size_t i = 0; i < count; ++i) {
-    p.own[i] = next;
-    if (!scene_error[p.scene[i]])
-      next += static_cast<std::size_t>(p.scenes[p.scene[i]].chain.beads);
+    const std::uint32_t s = p.scene[i];
+    drawer[i] = i;
+    if (scene_error[s]) continue;
+    std::vector<std::size_t>& of_draw = drawer_of_seed[draw_of[s]];
+    if (of_draw.empty()) of_draw.assign(seeds.size(), kNone);
+    std::size_t& first = of_draw[(range.first + i) / seed_stride % seeds.size()];
+    if (first == kNone) {
+      first = i;
+      p.own[i] = next;
+      next += static_cast<std::size_t>(p.scenes[s].chain.beads);
+    }
+    drawer[i] = first;
+    p.own[i] = p.own[first];
   }
   p.thresholds.reset(new double[next]);
-  constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
-  in_slices(
-      count, jobs, kPointsPerThread,
-      [&, scratch = std::optional<SceneDesc>{}, scratch_of = kNone](std::size_t i) mutable {
-        const std::uint32_t s = p.scene[i];
-        if (scene_error[s]) std::rethrow_exception(scene_error[s]);
-        // The scene copied once a run of points (a slice's points mostly share one).
-        if (!scratch || scratch_of != s) {
-          scratch = p.scenes[s];
-          scratch_of = s;
-        }
-        SceneDesc& scene = *scratch;
-        try {
-          if (!redraw_thresholds(scene, p.seed[i])) {
-            whole_scene(i);  // the reader refuses the seeds redraw_thresholds does, and says why
-            throw std::logic_error("chain.seed = " + number_text(p.seed[i]) +
-                                   ": the scene reader takes a seed redraw_thresholds refuses");
+  std::vector<char> drawn(count, 0);  // a drawer's row is written
+  // Point i's scene with its seed's thresholds (drawn where it is its row's drawer, copied
+  // else), checked; the first bad point in order fails, named by its origin.
+  const auto check_points = [&](bool drawers) {
+    return first_failure(
+        count, jobs, kPointsPerThread,
+        [&, scratch = std::optional<SceneDesc>{}, scratch_of = kNone](std::size_t i) mutable {
+          if ((drawer[i] == i) != drawers) return;
+          if (!drawers && !drawn[drawer[i]]) return;  // its seed failed at its drawer, earlier
+          const std::uint32_t s = p.scene[i];
+          if (scene_error[s]) std::rethrow_exception(scene_error[s]);
+          // The scene copied once a run of points (a slice's points mostly share one).
+          if (!scratch || scratch_of != s) {
+            scratch = p.scenes[s];
+            scratch_of = s;
           }
-          validate_new_thresholds(scene);  // the scene's other values passed with its first point
-        } catch (const SceneError&) {
-          whole_scene(i);  // the same error, its value named by origin
-          throw;
-        }
-        for (int j = 1; j <= scene.chain.beads; ++j)
-          p.thresholds[p.own[i] + static_cast<std::size_t>(j - 1)] = scene.chain.threshold_of(j);
-      });
+          SceneDesc& scene = *scratch;
+          double* row = p.thresholds.get() + p.own[i];
+          try {
+            if (!(drawers ? redraw_thresholds(scene, p.seed[i])
+                          : set_drawn_thresholds(scene, p.seed[i], row))) {
+              whole_scene(i);  // the reader refuses the seeds redraw_thresholds does, says why
+              throw std::logic_error("chain.seed = " + number_text(p.seed[i]) +
+                                     ": the scene reader takes a seed redraw_thresholds refuses");
+            }
+            if (drawers) {
+              for (int j = 1; j <= scene.chain.beads; ++j) row[j - 1] = scene.chain.threshold_of(j);
+              drawn[i] = 1;
+            }
+            validate_new_thresholds(scene);  // the scene's other values passed with its first
+          } catch (const SceneError&) {
+            whole_scene(i);  // the same error, its value named by origin
+            throw;
+          }
+        });
+  };
+  // The drawers first (every row written), then the points that share their rows.
+  std::optional<Failure> failure = check_points(true);
+  if (const auto later = check_points(false); later && (!failure || later->item < failure->item))
+    failure = later;
+  if (failure) std::rethrow_exception(failure->error);
   return p;
 }
 

@@ -26,7 +26,8 @@ namespace cb {
 struct SweepPoints {
   std::vector<SceneDesc> scenes;
   // Point i's scene is scenes[scene[i]], with, where seed[i] is a number (not NaN), that seed's
-  // thresholds: thresholds[own[i] + j - 1] for spring j.
+  // thresholds: thresholds[own[i] + j - 1] for spring j. Points whose scenes draw alike
+  // (draws_alike: a beta x seed grid's) share their seed's row.
   std::vector<std::uint32_t> scene;
   std::vector<double> seed;
   std::vector<std::size_t> own;

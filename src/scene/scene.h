@@ -177,6 +177,13 @@ bool set_scene_number(SceneDesc& scene, const std::string& key, double value,
 // scene), `threshold` their smallest. False, the scene unchanged, when it draws none or the
 // reader refuses the value (the text, read again, then says why). Not validated.
 bool redraw_thresholds(SceneDesc& scene, double seed);
+// The same with the thresholds already drawn: row[j - 1] for spring j, as redraw_thresholds
+// draws them for `seed` in a scene that draws_alike this one (a beta x seed grid draws each
+// seed once). False, the scene unchanged, where redraw_thresholds would be.
+bool set_drawn_thresholds(SceneDesc& scene, double seed, const double* row);
+// Whether redraw_thresholds(a, s) and redraw_thresholds(b, s) draw the same numbers for every
+// seed s: both draw, with the same distribution, scale and shape, for the same N.
+bool draws_alike(const SceneDesc& a, const SceneDesc& b);
 // The thresholds `draw` gives a chain of `beads` springs, into out[0 .. beads): the reader's,
 // redraw_thresholds' and the writer's one way from a ThresholdDraw to numbers.
 void draw_thresholds_into(const ThresholdDraw& draw, int beads, double* out);

@@ -76,6 +76,11 @@ bool assign_number(SceneDesc& next, const std::string& key, double value,
        !(chain.mass.empty() && chain.stiffness.empty() && chain.thresholds.empty())) ||
       (key == "chain.threshold" && !chain.thresholds.empty()))
     return false;
+  // A hanging chain's view defaults to vertical (scene_render.cpp): where G starts or stops
+  // hanging the chain and the text gives no view, the text is read again for it.
+  if (key == "chain.gravity" && !next.origins.contains("render.view") &&
+      (value > 0.0) != chain.hanging())
+    return false;
   if (key == "chain.seed") {
     // Drawn here as the reader draws them, so a sweep over 10^4 seeds does not parse the file
     // 10^4 times.
@@ -111,17 +116,41 @@ void draw_thresholds_into(const ThresholdDraw& draw, int beads, double* out) {
                   draw.scale, draw.shape, static_cast<std::uint64_t>(draw.seed), beads, out);
 }
 
-bool redraw_thresholds(SceneDesc& scene, double seed) {
+namespace {
+
+// Sets `scene` drawn for `seed`, its thresholds from `fill` (which writes N into its argument),
+// or returns false where the scene draws none or the reader refuses the seed.
+template <class Fill>
+bool set_thresholds_of_seed(SceneDesc& scene, double seed, const Fill& fill) {
   if (!scene.threshold_draw || seed < 0.0 || seed != std::floor(seed) || seed > 9.0e15)
     return false;
-  ThresholdDraw& draw = *scene.threshold_draw;
-  draw.seed = static_cast<std::int64_t>(seed);
+  scene.threshold_draw->seed = static_cast<std::int64_t>(seed);
   ChainParams& p = scene.chain;
   p.thresholds.resize(static_cast<std::size_t>(p.beads));
-  draw_thresholds_into(draw, p.beads, p.thresholds.data());
+  fill(p.thresholds.data());
   p.threshold = *std::min_element(p.thresholds.begin(), p.thresholds.end());
   p.normalize();
   return true;
+}
+
+}  // namespace
+
+bool redraw_thresholds(SceneDesc& scene, double seed) {
+  return set_thresholds_of_seed(scene, seed, [&](double* out) {
+    draw_thresholds_into(*scene.threshold_draw, scene.chain.beads, out);
+  });
+}
+
+bool set_drawn_thresholds(SceneDesc& scene, double seed, const double* row) {
+  return set_thresholds_of_seed(scene, seed,
+                                [&](double* out) { std::copy_n(row, scene.chain.beads, out); });
+}
+
+bool draws_alike(const SceneDesc& a, const SceneDesc& b) {
+  return a.threshold_draw && b.threshold_draw && a.chain.beads == b.chain.beads &&
+         a.threshold_draw->dist == b.threshold_draw->dist &&
+         a.threshold_draw->scale == b.threshold_draw->scale &&
+         a.threshold_draw->shape == b.threshold_draw->shape;
 }
 
 bool set_scene_number(SceneDesc& scene, const std::string& key, double value,
