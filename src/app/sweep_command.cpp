@@ -53,6 +53,8 @@ void append_row(std::string& text, const Grid& grid, const std::vector<double>& 
   text += '\n';
 }
 
+constexpr std::size_t kCsvChunk = 1 << 16;  // bytes of CSV text between writes
+
 Shard sweep_shard(const std::string& text) {
   if (text == "slurm") return shard_from_slurm([](const char* name) { return std::getenv(name); });
   return parse_shard(text);
@@ -114,9 +116,18 @@ int sweep_command(const SweepOptions& o) {
     return 1;
   }
   if (g_interrupted) return interrupted_status("no CSV written");
+  // Written a few hundred rows at a time: a 2 x 10^5-point grid's 7 MB of text built whole
+  // grew by copies into fresh pages (a tenth of that sweep's time, page faults included).
   std::string text = grid.csv_header() + "\n";
-  for (std::size_t i = 0; i < results.size(); ++i)
-    append_row(text, grid, grid.point(range.first + i), results[i]);
+  std::vector<double> values;
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    grid.point_into(range.first + i, values);
+    append_row(text, grid, values, results[i]);
+    if (text.size() >= kCsvChunk) {
+      out.write(text);
+      text.clear();
+    }
+  }
   out.write(text);
   ShardRecord record = sweep_record(o, grid);
   record.shard = shard;

@@ -39,13 +39,18 @@ std::size_t Grid::size() const {
 }
 
 std::vector<double> Grid::point(std::size_t index) const {
-  std::vector<double> p(axes.size());
+  std::vector<double> p;
+  point_into(index, p);
+  return p;
+}
+
+void Grid::point_into(std::size_t index, std::vector<double>& values) const {
+  values.resize(axes.size());
   for (std::size_t k = axes.size(); k-- > 0;) {  // last axis fastest
     const std::size_t n = axes[k].values.size();
-    p[k] = axes[k].values[index % n];
+    values[k] = axes[k].values[index % n];
     index /= n;
   }
-  return p;
 }
 
 std::size_t Grid::index_on(std::size_t index, const std::vector<bool>& kept) const {

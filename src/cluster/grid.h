@@ -28,6 +28,8 @@ struct Grid {
   std::size_t size() const;  // product of the axes' lengths (0 without axes)
   // The values of point `index` (< size()), one per axis.
   std::vector<double> point(std::size_t index) const;
+  // The same into `values` (its storage reused: a sweep's rows, one after another).
+  void point_into(std::size_t index, std::vector<double>& values) const;
   // Point `index`'s place in the grid of the axes `kept` (kept[k] for axis k) alone: points
   // with the same values on those axes share it.
   std::size_t index_on(std::size_t index, const std::vector<bool>& kept) const;
