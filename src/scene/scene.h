@@ -161,6 +161,9 @@ void validate(const SceneDesc& scene);
 // anharmonic springs, the step's (linearised below the threshold). Its message may be briefer
 // than validate()'s: a caller that shows one runs validate().
 void validate_new_thresholds(const SceneDesc& scene);
+// Whether validate_new_thresholds reads no value `key` sets (the drive's): two scenes that
+// differ only in such keys pass or fail it alike with the same thresholds.
+bool thresholds_check_ignores(const std::string& key);
 
 // Sets one numeric key as a scene file would give it (in the scene's units, converted to
 // Eq. (dimless) form), records `origin` as where the value came from, and validates the

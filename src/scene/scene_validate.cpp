@@ -522,11 +522,16 @@ void validate_new_thresholds(const SceneDesc& scene) {
   // Keep in step with check_values: of its checks only Checker::chain() (the thresholds
   // themselves, the hanging chain's weight, the anharmonic springs' reach) and
   // Checker::integrator() (stability_limit) read them (tests/test_sweep_scenes.cpp compares).
+  // Neither reads the drive (thresholds_check_ignores).
   scene_detail::Problems problems;
   const Checker check(scene, problems);
   check.chain();
   if (scene.chain.anharmonic()) check.integrator();
   problems.throw_if_any();
+}
+
+bool thresholds_check_ignores(const std::string& key) {
+  return key.rfind("drive.", 0) == 0;
 }
 
 }  // namespace cb
