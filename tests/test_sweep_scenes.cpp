@@ -268,3 +268,27 @@ TEST_CASE("a sweep's CSV from the command line has every point's row, in order",
   CHECK(rows == grid.size());
   CHECK(equal == grid.size());
 }
+
+TEST_CASE("a beta x seed grid's memory counts each seed's thresholds once", "[sweep][flaws]") {
+  // 20 betas x 500 seeds of a 1000-bead chain: the points share 500 rows of 1000 thresholds
+  // (sweep_points.cpp). The estimate must cover the rows the points hold, and not count a row
+  // a point (20 x as many).
+  cb::SweepOptions o;
+  o.scene = std::string(CHAINBREAK_SCENES) + "/flawed_chain.toml";
+  o.overrides = {{"chain.beads", "1000"}};
+  o.axes = {"--vary drive.beta=0.01:0.2:20", "--vary chain.seed=1:500:500"};
+  const cb::Grid grid = cb::sweep_grid(o);
+  for (const cb::PointRange range : {cb::PointRange{0, grid.size()}, cb::PointRange{2600, 2900}}) {
+    INFO("points " << range.first << ".." << range.last);
+    double estimate = -1.0;
+    for (const auto& need : cb::sweep_memory(o, grid, range).needs)
+      if (need.what == "scenes of the points") estimate = need.bytes;
+    const cb::SweepPoints points = cb::sweep_points(o, grid, range);
+    std::vector<std::size_t> rows(points.own);
+    std::sort(rows.begin(), rows.end());
+    const auto held = static_cast<double>(std::unique(rows.begin(), rows.end()) - rows.begin()) *
+                      1000 * sizeof(double);
+    CHECK(estimate >= held);
+    CHECK(estimate < 1.5 * held);
+  }
+}

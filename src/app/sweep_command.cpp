@@ -53,8 +53,6 @@ void append_row(std::string& text, const Grid& grid, const std::vector<double>& 
   text += '\n';
 }
 
-constexpr std::size_t kCsvChunk = 1 << 16;  // bytes of CSV text between writes
-
 Shard sweep_shard(const std::string& text) {
   if (text == "slurm") return shard_from_slurm([](const char* name) { return std::getenv(name); });
   return parse_shard(text);
@@ -123,7 +121,7 @@ int sweep_command(const SweepOptions& o) {
   for (std::size_t i = 0; i < results.size(); ++i) {
     grid.point_into(range.first + i, values);
     append_row(text, grid, values, results[i]);
-    if (text.size() >= kCsvChunk) {
+    if (text.size() >= kSweepCsvChunk) {
       out.write(text);
       text.clear();
     }

@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "app/csv.h"
+#include "exact/first_break.h"    // FirstBreak
 #include "resources/resources.h"  // kMaxSweepValues
 #include "scene/scene_hash.h"
 #include "version.h"  // CHAINBREAK_VERSION (src/cmake/version.cmake)
@@ -94,19 +95,28 @@ MemoryEstimate sweep_memory(const SweepOptions& o, const Grid& grid, PointRange 
   MemoryEstimate m;
   // Every point's scene is built (and checked) before the first run; a table drive's rows
   // and the scene's strings are copied into each.
-  // Seeds of drawn thresholds share their scene and keep their thresholds (sweep_points.h).
+  // Seeds of drawn thresholds share their scene, and scenes that draw alike share each seed's
+  // row of thresholds (sweep_points.h; draws_alike: the same N, scale and shape), so the rows are
+  // at most the seeds times the values of the axes a draw reads.
   const bool seeds =
       base.threshold_draw && std::any_of(grid.axes.begin(), grid.axes.end(),
                                          [](const GridAxis& a) { return a.key == "chain.seed"; });
+  double rows = 1.0;
+  for (const auto& axis : grid.axes)
+    if (axis.key == "chain.seed" || axis.key == "chain.beads" || axis.key == "chain.threshold" ||
+        axis.key == "chain.threshold_shape")
+      rows *= static_cast<double>(axis.values.size());
   m.needs.push_back(
-      {"scenes of the points", seeds ? points * (8.0 * beads + 32.0) : points * scene_bytes(base)});
+      {"scenes of the points",
+       seeds ? points * 48.0 + std::min(points, rows) * 8.0 * beads : points * scene_bytes(base)});
   // One run per job at a time: RK4's arrays, and the exact solver's N x N tables too.
   const bool exact = o.solver == Solver::Exact;
   const double run = rk4_bytes(beads) + (exact ? exact_table_bytes(beads) : 0.0);
   m.needs.push_back({(exact ? "exact tables and state of " : "RK4 state of ") +
                          std::to_string(static_cast<long long>(jobs)) + " run(s) at once",
                      jobs * run});
-  m.needs.push_back({"CSV text", points * csv_row_bytes(grid.axes.size() + 2.0)});
+  // The first breaks, one a point, and the CSV's text between writes (sweep_command.cpp).
+  m.needs.push_back({"first breaks and CSV text", points * sizeof(FirstBreak) + kSweepCsvChunk});
   return m;
 }
 

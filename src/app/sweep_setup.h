@@ -20,9 +20,11 @@ Grid sweep_grid(const SweepOptions& o);
 // The points [range) and their scenes: every value validated before any work.
 SweepPoints sweep_points(const SweepOptions& o, const Grid& grid, PointRange range);
 // What the sweep of points [range) will hold at once (resources.h): the points' scenes, one
-// run per job (RK4 arrays; the exact solver's N x N tables too) and the CSV text. Sized by
-// the largest chain any point runs.
+// run per job (RK4 arrays; the exact solver's N x N tables too), the first breaks and the CSV
+// text between writes. Sized by the largest chain any point runs.
 MemoryEstimate sweep_memory(const SweepOptions& o, const Grid& grid, PointRange range);
+// Bytes of a sweep's CSV text held between writes.
+inline constexpr std::size_t kSweepCsvChunk = std::size_t{1} << 16;
 // The record of this sweep without shard, timing or host: scene, hash, solver, header, grid
 // and the command that recomputes it.
 ShardRecord sweep_record(const SweepOptions& o, const Grid& grid);
