@@ -114,7 +114,7 @@ int sweep_command(const SweepOptions& o) {
     return 1;
   }
   if (g_interrupted) return interrupted_status("no CSV written");
-  // Written a few hundred rows at a time: a 2 x 10^5-point grid's 7 MB of text built whole
+  // Written kSweepCsvChunk bytes at a time: a 2 x 10^5-point grid's 7 MB of text built whole
   // grew by copies into fresh pages (a tenth of that sweep's time, page faults included).
   std::string text = grid.csv_header() + "\n";
   std::vector<double> values;

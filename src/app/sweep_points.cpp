@@ -193,11 +193,12 @@ SweepPoints sweep_points(const SceneVariations& variations, const Grid& grid, Po
   std::vector<std::size_t> draw_of(p.scenes.size());  // the first scene drawing alike
   std::vector<std::size_t> draws;                     // the first of each draw
   for (std::size_t s = 0; s < p.scenes.size(); ++s) {
+    if (scene_error[s]) continue;
     const auto alike = std::find_if(draws.begin(), draws.end(), [&](std::size_t t) {
-      return !scene_error[s] && draws_alike(p.scenes[t], p.scenes[s]);
+      return draws_alike(p.scenes[t], p.scenes[s]);
     });
     draw_of[s] = alike != draws.end() ? *alike : s;
-    if (alike == draws.end() && !scene_error[s]) draws.push_back(s);
+    if (draw_of[s] == s) draws.push_back(s);
   }
   // Each row's drawer, by draw and seed index; a point of a failed scene is its own drawer (it
   // rethrows the scene's error).
