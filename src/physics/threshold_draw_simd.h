@@ -2,6 +2,7 @@
 // pragma: the standard headers threshold_draw_lanes.inc needs, and two pragmas for it.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
