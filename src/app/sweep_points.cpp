@@ -221,14 +221,48 @@ SweepPoints sweep_points(const SceneVariations& variations, const Grid& grid, Po
     p.own[i] = p.own[first];
   }
   p.thresholds.reset(new double[next]);
-  std::vector<char> drawn(count, 0);  // a drawer's row is written
+  // Every drawer's row, before the checks: the rows of consecutive drawers of one draw (their
+  // rows consecutive too, as `own` gives them) drawn at once, kDrawBlock drawers a block, the
+  // blocks on the sweep's threads; one row at a time left the draw's lanes partly idle. A seed
+  // the reader refuses is left to the checks, which name it.
+  std::vector<std::size_t> row_drawers;
+  for (std::size_t i = 0; i < count; ++i)
+    if (drawer[i] == i && !scene_error[p.scene[i]]) row_drawers.push_back(i);
+  constexpr std::size_t kDrawBlock = 64;
+  in_slices((row_drawers.size() + kDrawBlock - 1) / kDrawBlock, jobs, kPointsPerThread / kDrawBlock,
+            [&](std::size_t block) {
+              const std::size_t end = std::min(row_drawers.size(), (block + 1) * kDrawBlock);
+              std::vector<std::uint64_t> seeds;
+              for (std::size_t k = block * kDrawBlock; k < end;) {
+                const std::size_t first = row_drawers[k];
+                const SceneDesc& scene = p.scenes[p.scene[first]];
+                const auto n = static_cast<std::size_t>(scene.chain.beads);
+                seeds.clear();
+                for (; k < end; ++k) {
+                  const std::size_t i = row_drawers[k];
+                  const std::optional<std::uint64_t> seed = seed_of_value(p.seed[i]);
+                  if (draw_of[p.scene[i]] != draw_of[p.scene[first]] ||
+                      p.own[i] != p.own[first] + seeds.size() * n || !seed)
+                    break;
+                  seeds.push_back(*seed);
+                }
+                if (seeds.empty()) {
+                  ++k;  // a refused seed: its row is not drawn (the checks say why)
+                  continue;
+                }
+                if (scene.threshold_draw)  // else the checks refuse the seed
+                  draw_threshold_rows_into(*scene.threshold_draw, scene.chain.beads, seeds.data(),
+                                           seeds.size(), p.thresholds.get() + p.own[first]);
+              }
+            });
+  std::vector<char> drawn(count, 0);  // a drawer's seed is taken (its row drawn)
   // Where the other axes are the drive's, a point's check is its drawer's (same chain, same
   // thresholds): only the drawers are checked.
   const bool checked_by_drawer = std::all_of(
       grid.axes.begin(), grid.axes.end(),
       [](const GridAxis& a) { return a.key == "chain.seed" || thresholds_check_ignores(a.key); });
-  // Point i's scene with its seed's thresholds (drawn where it is its row's drawer, copied
-  // else), checked; the first bad point in order fails, named by its origin.
+  // Point i's scene with its seed's thresholds (its row's), checked; the first bad point in
+  // order fails, named by its origin.
   const auto check_points = [&](bool drawers) {
     return first_failure(
         count, jobs, kPointsPerThread,
@@ -245,16 +279,12 @@ SweepPoints sweep_points(const SceneVariations& variations, const Grid& grid, Po
           SceneDesc& scene = *scratch;
           double* row = p.thresholds.get() + p.own[i];
           try {
-            if (!(drawers ? redraw_thresholds(scene, p.seed[i])
-                          : set_drawn_thresholds(scene, p.seed[i], row))) {
+            if (!set_drawn_thresholds(scene, p.seed[i], row)) {
               whole_scene(i);  // the reader refuses the seeds redraw_thresholds does, says why
               throw std::logic_error("chain.seed = " + number_text(p.seed[i]) +
                                      ": the scene reader takes a seed redraw_thresholds refuses");
             }
-            if (drawers) {
-              for (int j = 1; j <= scene.chain.beads; ++j) row[j - 1] = scene.chain.threshold_of(j);
-              drawn[i] = 1;
-            }
+            if (drawers) drawn[i] = 1;
             validate_new_thresholds(scene);  // the scene's other values passed with its first
           } catch (const SceneError&) {
             whole_scene(i);  // the same error, its value named by origin

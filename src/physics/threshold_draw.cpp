@@ -99,19 +99,29 @@ std::vector<double> draw_thresholds(ThresholdDist dist, double scale, double sha
 
 void draw_thresholds(ThresholdDist dist, double scale, double shape, std::uint64_t seed, int n,
                      double* out) {
+  draw_threshold_rows(dist, scale, shape, &seed, 1, n, out);
+}
+
+void draw_threshold_rows(ThresholdDist dist, double scale, double shape, const std::uint64_t* seeds,
+                         std::size_t rows, int n, double* out) {
   const auto count = static_cast<std::size_t>(n);
-  const std::uint64_t stream = stream_of(seed);
   if (dist == ThresholdDist::Weibull) {
-    for (int j = 1; j <= n; ++j) out[j - 1] = uniform_in(stream, static_cast<std::uint64_t>(j));
-    weibull_quantiles(out, count, shape, out);
-    for (std::size_t j = 0; j < count; ++j) out[j] *= scale;
+    for (std::size_t r = 0; r < rows; ++r) {
+      const std::uint64_t stream = stream_of(seeds[r]);
+      for (std::size_t j = 1; j <= count; ++j) out[r * count + j - 1] = uniform_in(stream, j);
+    }
+    weibull_quantiles(out, rows * count, shape, out);
+    for (std::size_t i = 0; i < rows * count; ++i) out[i] *= scale;
     return;
   }
   // Normal: z > -1/shape keeps 1 + shape z > 0; u is mapped into (Phi(-1/shape), 1).
   const double cut = normal_cdf(-1.0 / shape);
-  for (int j = 1; j <= n; ++j) {
-    const double u = uniform_in(stream, static_cast<std::uint64_t>(j));
-    out[j - 1] = scale * (1.0 + shape * normal_quantile(cut + u * (1.0 - cut)));
+  for (std::size_t r = 0; r < rows; ++r) {
+    const std::uint64_t stream = stream_of(seeds[r]);
+    for (std::size_t j = 1; j <= count; ++j) {
+      const double u = uniform_in(stream, j);
+      out[r * count + j - 1] = scale * (1.0 + shape * normal_quantile(cut + u * (1.0 - cut)));
+    }
   }
 }
 

@@ -49,5 +49,10 @@ std::vector<double> draw_thresholds(ThresholdDist dist, double scale, double sha
 // The same into out[0 .. n) (a sweep's 10^4 seeds redraw into one array, issue #23).
 void draw_thresholds(ThresholdDist dist, double scale, double shape, std::uint64_t seed, int n,
                      double* out);
+// The rows of seeds[0 .. rows) at once, row k into out[k n .. (k + 1) n): each row's bits are
+// draw_thresholds' for its seed (which draws one row this way). A 30-spring row alone fills the
+// Weibull lanes poorly (its u of each way in 2 and 3 registers); a sweep's seeds fill them.
+void draw_threshold_rows(ThresholdDist dist, double scale, double shape, const std::uint64_t* seeds,
+                         std::size_t rows, int n, double* out);
 
 }  // namespace cb

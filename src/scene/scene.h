@@ -190,6 +190,13 @@ bool draws_alike(const SceneDesc& a, const SceneDesc& b);
 // The thresholds `draw` gives a chain of `beads` springs, into out[0 .. beads): the reader's,
 // redraw_thresholds' and the writer's one way from a ThresholdDraw to numbers.
 void draw_thresholds_into(const ThresholdDraw& draw, int beads, double* out);
+// The same for several seeds at once (`draw`'s own seed ignored), row k into out[k beads ..]: a
+// sweep draws its seeds' rows this way before setting them (set_drawn_thresholds).
+void draw_threshold_rows_into(const ThresholdDraw& draw, int beads, const std::uint64_t* seeds,
+                              std::size_t rows, double* out);
+// The seed the scene reader takes for chain.seed = value (a whole number from 0 to 9 x 10^15),
+// or none.
+std::optional<std::uint64_t> seed_of_value(double value);
 
 struct NumberSetting {
   std::string key;

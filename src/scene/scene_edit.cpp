@@ -111,9 +111,20 @@ bool assign_number(SceneDesc& next, const std::string& key, double value,
 
 }  // namespace
 
+void draw_threshold_rows_into(const ThresholdDraw& draw, int beads, const std::uint64_t* seeds,
+                              std::size_t rows, double* out) {
+  draw_threshold_rows(draw.dist == "normal" ? ThresholdDist::Normal : ThresholdDist::Weibull,
+                      draw.scale, draw.shape, seeds, rows, beads, out);
+}
+
 void draw_thresholds_into(const ThresholdDraw& draw, int beads, double* out) {
-  draw_thresholds(draw.dist == "normal" ? ThresholdDist::Normal : ThresholdDist::Weibull,
-                  draw.scale, draw.shape, static_cast<std::uint64_t>(draw.seed), beads, out);
+  const auto seed = static_cast<std::uint64_t>(draw.seed);
+  draw_threshold_rows_into(draw, beads, &seed, 1, out);
+}
+
+std::optional<std::uint64_t> seed_of_value(double value) {
+  if (value < 0.0 || value != std::floor(value) || value > 9.0e15) return std::nullopt;
+  return static_cast<std::uint64_t>(value);
 }
 
 namespace {
@@ -122,9 +133,9 @@ namespace {
 // or returns false where the scene draws none or the reader refuses the seed.
 template <class Fill>
 bool set_thresholds_of_seed(SceneDesc& scene, double seed, const Fill& fill) {
-  if (!scene.threshold_draw || seed < 0.0 || seed != std::floor(seed) || seed > 9.0e15)
-    return false;
-  scene.threshold_draw->seed = static_cast<std::int64_t>(seed);
+  const std::optional<std::uint64_t> whole = seed_of_value(seed);
+  if (!scene.threshold_draw || !whole) return false;
+  scene.threshold_draw->seed = static_cast<std::int64_t>(*whole);
   ChainParams& p = scene.chain;
   p.thresholds.resize(static_cast<std::size_t>(p.beads));
   fill(p.thresholds.data());

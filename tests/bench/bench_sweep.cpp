@@ -76,6 +76,19 @@ void BM_SweepRk4Single(benchmark::State& state) {
   }
 }
 
+// Issue #23's sweep before its ensemble: `sweep scenes/flawed_chain.toml --vary
+// chain.seed=1:10000:10000`'s points (sweep_points: 3 x 10^5 Weibull thresholds drawn, each seed's
+// scene set and checked), the part of a seed sweep its one RK4 run does not cover.
+void BM_SeedPoints(benchmark::State& state) {
+  const cb::SceneVariations variations(std::string(CHAINBREAK_SCENES) + "/flawed_chain.toml", {});
+  cb::Grid grid;
+  cb::add_axis(grid, cb::parse_vary("chain.seed=1:10000:10000"));
+  const auto origin = [](const cb::GridAxis& a, double v) { return a.key + cb::number_text(v); };
+  for (auto _ : state)
+    benchmark::DoNotOptimize(cb::sweep_points(variations, grid, {0, grid.size()}, cb::Solver::Rk4,
+                                              static_cast<int>(state.range(0)), origin));
+}
+
 void common(benchmark::internal::Benchmark* b) {
   b->ArgName("jobs")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime();
   b->Repetitions(5)->ReportAggregatesOnly(false);
@@ -87,6 +100,7 @@ BENCHMARK(BM_SweepScenes)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime(
 BENCHMARK(BM_SweepRk4)->Apply(common);
 BENCHMARK(BM_SweepExact)->Apply(common);
 BENCHMARK(BM_SweepRk4Single)->Apply(common);
+BENCHMARK(BM_SeedPoints)->Apply(common);
 
 int main(int argc, char** argv) {
   if (!cb::bench::initialize(argc, argv)) return 1;
