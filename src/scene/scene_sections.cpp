@@ -9,8 +9,8 @@
 #include <cmath>
 #include <cstdint>
 
-#include "scene/scene_coefficients.h"
 #include "physics/threshold_draw.h"
+#include "scene/scene_coefficients.h"
 
 namespace cb::scene_detail {
 
@@ -65,10 +65,7 @@ std::optional<ThresholdDraw> read_threshold_draw(const SceneReader& r, bool bead
                    key);
     return std::nullopt;
   }
-  ThresholdDist kind = ThresholdDist::Weibull;
-  if (*dist == "normal") {
-    kind = ThresholdDist::Normal;
-  } else if (*dist != "weibull") {
+  if (*dist != "normal" && *dist != "weibull") {
     r.fail("chain", "threshold_dist",
            "unknown chain.threshold_dist '" + *dist + "'; " +
                suggest(*dist, {"weibull", "normal"}, "\"", "\"") +
@@ -106,8 +103,8 @@ std::optional<ThresholdDraw> read_threshold_draw(const SceneReader& r, bool bead
   }
   const ThresholdDraw given{*dist, p.threshold, *shape, *seed};
   // As for any threshold array, `threshold` becomes the smallest drawn value.
-  p.thresholds =
-      draw_thresholds(kind, p.threshold, *shape, static_cast<std::uint64_t>(*seed), p.beads);
+  p.thresholds.resize(static_cast<std::size_t>(p.beads));
+  draw_thresholds_into(given, p.beads, p.thresholds.data());
   p.threshold = *std::min_element(p.thresholds.begin(), p.thresholds.end());
   return given;
 }
