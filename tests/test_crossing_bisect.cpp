@@ -43,16 +43,27 @@ double reference_theta(const HermiteRoot& r) {
   return theta * r.h;
 }
 
+// What hermite_root is given.
+struct RootInputs {
+  double p0, p1, m0, m1, h, upper, lower;
+};
+
 // Random roots of every kind the bisection meets, and the nasty ones: roots at s = 0 and 1,
-// cubics that only just touch a bound, exact hits of the bound at a midpoint (dyadic lines),
-// tiny h, magnitudes from 2^-1000 to 2^1000 (products near the subnormals and near overflow),
+// cubics that only just touch a bound, rises of a few ulps through it, slopes that only just
+// keep p' from vanishing in the step, exact hits of the bound at a midpoint (dyadic lines), tiny
+// h, magnitudes from 2^-1000 to 2^1000 (products near the subnormals and near overflow),
 // stretch-only chains (lower = -inf) and both bounds in reach.
 class RootMaker {
  public:
   explicit RootMaker(std::uint64_t seed) : rng_(seed) {}
 
   HermiteRoot next() {
-    const int kind = static_cast<int>(rng_() % 9);
+    const RootInputs in = next_inputs();
+    return cb::detail::hermite_root(in.p0, in.p1, in.m0, in.m1, in.h, in.upper, in.lower);
+  }
+
+  RootInputs next_inputs() {
+    const int kind = static_cast<int>(rng_() % 11);
     const double upper = std::ldexp(uniform(0.1, 2.0), -static_cast<int>(rng_() % 4));
     double lower = lower_for(upper);
     double h = std::exp(uniform(std::log(1e-4), std::log(1.0)));
@@ -82,7 +93,7 @@ class RootMaker {
         const double s = std::ldexp(static_cast<double>(1 + rng_() % 15), -4);  // in (0, 1)
         p0 = c - s * delta, p1 = p0 + delta;
         m0 = m1 = delta / h;
-        return cb::detail::hermite_root(p0, p1, m0, m1, h, c, rng_() % 2 ? -c : -kInf);
+        return {p0, p1, m0, m1, h, c, rng_() % 2 ? -c : -kInf};
       }
       case 5:  // tiny h with steep slopes
         h = std::ldexp(1.0, -static_cast<int>(30 + rng_() % 60));
@@ -91,8 +102,7 @@ class RootMaker {
       case 6: {  // everything scaled by 2^k: huge and tiny magnitudes, subnormal-ish products
         const int k = static_cast<int>(rng_() % 2001) - 1000;
         const double scale = std::ldexp(1.0, k);
-        return cb::detail::hermite_root(p0 * scale, p1 * scale, m0 * scale, m1 * scale, h,
-                                        upper * scale, lower * scale);
+        return {p0 * scale, p1 * scale, m0 * scale, m1 * scale, h, upper * scale, lower * scale};
       }
       case 7:  // values next to the subnormals, unscaled bounds
         p0 = std::ldexp(uniform(-1.0, 1.0), -1020), p1 = upper * uniform(0.5, 2.0);
@@ -101,8 +111,26 @@ class RootMaker {
       case 8:  // falling towards the lower bound
         p0 = uniform(-0.5, 0.9) * upper, p1 = lower == -kInf ? -upper : 1.5 * lower;
         break;
+      case 9: {  // a rise of a few ulps through the bound: where g(mid) >= 0 is rounding's call
+        // over much of [0, 1] (the bisection's skip ahead must see it cannot decide those)
+        const double ulps = std::ldexp(upper, -52 + static_cast<int>(rng_() % 12));
+        p0 = upper - uniform(0.0, 8.0) * ulps, p1 = upper + uniform(0.0, 8.0) * ulps;
+        m0 = (p1 - p0) / h * uniform(0.5, 1.5), m1 = (p1 - p0) / h * uniform(0.5, 1.5);
+        break;
+      }
+      case 10: {  // p = a + b s + q s^2 + d s^3 with |b| near 4 (3 |d| + 2 |q|), where
+        // hermite_root stops looking for p' = 0 in the step; p' = 0 within [-1.5, 1.5] or not
+        const double b = uniform(-1.0, 1.0) * upper, share = uniform(0.0, 1.0);
+        const double near =
+            0.25 * (1.0 + std::ldexp(uniform(-1.0, 1.0), -static_cast<int>(rng_() % 53)));
+        const double q = (rng_() % 2 ? 1.0 : -1.0) * std::abs(b) * near * share / 2.0;
+        const double d = (rng_() % 2 ? 1.0 : -1.0) * std::abs(b) * near * (1.0 - share) / 3.0;
+        p0 = upper * uniform(-1.0, 0.99), p1 = p0 + b + q + d;
+        m0 = b / h, m1 = (d - 2.0 * p0 - b + 2.0 * p1) / h;
+        break;
+      }
     }
-    return cb::detail::hermite_root(p0, p1, m0, m1, h, upper, lower);
+    return {p0, p1, m0, m1, h, upper, lower};
   }
 
  private:
@@ -123,6 +151,64 @@ class RootMaker {
 
   std::mt19937_64 rng_;
 };
+
+// hermite_root from crossing.h's rule, every step taken: the cubic's coefficients; theta = 0 at
+// once where p(0) is already at a bound; else [0, 1] split where p' = b + 2 q s + 3 d s^2
+// vanishes (the quadratic's stable roots, each a cut where it lies in (0, 1)); the first piece
+// whose ends straddle a bound holds the brackets. Here the quadratic is always solved.
+HermiteRoot reference_root(const RootInputs& in) {
+  HermiteRoot r;
+  r.a = in.p0, r.b = in.h * in.m0;
+  r.q = -3.0 * in.p0 - 2.0 * in.h * in.m0 + 3.0 * in.p1 - in.h * in.m1;
+  r.d = 2.0 * in.p0 + in.h * in.m0 - 2.0 * in.p1 + in.h * in.m1;
+  r.h = in.h, r.upper = in.upper, r.lower = in.lower;
+  const auto p = [&](double s) { return r.a + s * (r.b + s * (r.q + s * r.d)); };
+  const bool stretch_only = in.lower == -std::numeric_limits<double>::infinity();
+  const auto up = [&](double s) { return p(s) - in.upper; };
+  const auto down = [&](double s) { return in.lower - p(s); };
+  if (up(0.0) >= 0.0 || (!stretch_only && down(0.0) >= 0.0)) {
+    r.theta = 0.0;
+    return r;
+  }
+  std::vector<double> cuts = {0.0};
+  const double A = 3.0 * r.d, B = 2.0 * r.q, C = r.b;
+  if (std::abs(A) > 1e-300) {
+    const double disc = B * B - 4.0 * A * C;
+    if (disc > 0.0) {
+      const double root = std::sqrt(disc);
+      const double t = -0.5 * (B + std::copysign(root, B));
+      double r1 = t / A, r2 = t != 0.0 ? C / t : r1;
+      if (r1 > r2) std::swap(r1, r2);
+      for (double r0 : {r1, r2})
+        if (r0 > 0.0 && r0 < 1.0) cuts.push_back(r0);
+    }
+  } else if (std::abs(B) > 1e-300) {
+    const double r0 = -C / B;
+    if (r0 > 0.0 && r0 < 1.0) cuts.push_back(r0);
+  }
+  cuts.push_back(1.0);
+  for (std::size_t k = 0; k + 1 < cuts.size() && r.brackets == 0; ++k) {
+    const double lo = cuts[k], hi = cuts[k + 1];
+    const auto add = [&](bool is_down) {
+      r.lo[r.brackets] = lo, r.hi[r.brackets] = hi, r.down[r.brackets] = is_down;
+      ++r.brackets;
+    };
+    if (up(lo) < 0.0 && up(hi) >= 0.0) add(false);
+    if (!stretch_only && down(lo) < 0.0 && down(hi) >= 0.0) add(true);
+  }
+  return r;
+}
+
+// Whether two roots are the same to the bit, field by field.
+bool same_root(const HermiteRoot& x, const HermiteRoot& y) {
+  const auto same = [](double u, double v) { return std::memcmp(&u, &v, sizeof u) == 0; };
+  bool equal = same(x.a, y.a) && same(x.b, y.b) && same(x.q, y.q) && same(x.d, y.d) &&
+               same(x.h, y.h) && same(x.upper, y.upper) && same(x.lower, y.lower) &&
+               same(x.theta, y.theta) && x.brackets == y.brackets;
+  for (int k = 0; equal && k < x.brackets; ++k)
+    equal = same(x.lo[k], y.lo[k]) && same(x.hi[k], y.hi[k]) && x.down[k] == y.down[k];
+  return equal;
+}
 
 struct Path {
   std::string name;
@@ -186,4 +272,31 @@ TEST_CASE("every bisection path gives the scalar loop's theta bit for bit", "[cr
                    << (differ ? ", the first: root " + std::to_string(first) : std::string()));
     CHECK(differ == 0);
   }
+}
+
+TEST_CASE("hermite_root gives the rule's cubic and brackets bit for bit", "[crossing]") {
+  // Its shortcut (no quadratic solved where |b| >= 4 (3 |d| + 2 |q|)) against the rule with the
+  // quadratic always solved, on 10^6 cubics of every kind above.
+  RootMaker maker(20261130);
+  std::size_t differ = 0, skipped = 0, cut = 0, near_edge = 0;
+  int first = -1;
+  for (int i = 0; i < 1000000; ++i) {
+    const RootInputs in = maker.next_inputs();
+    const HermiteRoot r =
+        cb::detail::hermite_root(in.p0, in.p1, in.m0, in.m1, in.h, in.upper, in.lower);
+    const HermiteRoot expected = reference_root(in);
+    if (!same_root(r, expected) && differ++ == 0) first = i;
+    const double A = std::abs(3.0 * expected.d), B = std::abs(2.0 * expected.q);
+    const double C = std::abs(expected.b);
+    skipped += C >= 4.0 * (A + B);
+    near_edge += C >= 3.0 * (A + B) && C <= 5.0 * (A + B);
+    cut += expected.brackets > 0 && (expected.lo[0] != 0.0 || expected.hi[0] != 1.0);
+  }
+  INFO(skipped << " cubics skip the quadratic, " << near_edge << " near where they start to, "
+               << cut << " bracketed between cuts; " << differ
+               << " differ from the rule, the first: cubic " << first);
+  CHECK(skipped > 100000);
+  CHECK(near_edge > 50000);
+  CHECK(cut > 50000);
+  CHECK(differ == 0);
 }

@@ -34,7 +34,12 @@ HermiteRoot hermite_root(double p0, double p1, double m0, double m1, double h, d
   double cuts[4] = {0.0, 1.0, 1.0, 1.0};
   int count = 1;
   const double A = 3.0 * r.d, B = 2.0 * r.q, C = r.b;
-  if (std::abs(A) > 1e-300) {
+  // Where |C| >= 4 (|A| + |B|), p' keeps C's sign on [-1, 1], and the roots below, as rounded,
+  // lie beyond 1 in size (|r| >= sqrt |C / A| or |C / B| or |C| / |t| with |t| <= 3/4 |C|, a
+  // few ulps aside): none is a cut, so the sqrt and divisions are skipped. The usual case: over
+  // one step the slope changes little.
+  if (std::abs(C) >= 4.0 * (std::abs(A) + std::abs(B))) {
+  } else if (std::abs(A) > 1e-300) {
     const double disc = B * B - 4.0 * A * C;
     if (disc > 0.0) {
       const double root = std::sqrt(disc);
