@@ -24,6 +24,7 @@
 #include "output/output_file.h"
 #include "output/output_lock.h"
 #include "physics/integrator.h"
+#include "physics/parked_threads.h"
 #include "resources/resources.h"
 
 namespace cb {
@@ -71,6 +72,10 @@ long peak_memory_kib() {
 }  // namespace
 
 int sweep_command(const SweepOptions& o) {
+  // The sweep's threads, started now and parked, so that its first parallel phase, a few ms
+  // from here, finds them running (parked_threads.h: a VM can start a thread ms late).
+  prestart_threads((o.jobs > 0 ? o.jobs : static_cast<int>(std::thread::hardware_concurrency())) -
+                   1);
   check_sweep_solver(o.solver);
   if (record_path(o.csv) == o.csv)
     throw SceneError("--csv " + o.csv + ": the sweep's record goes to " + o.csv +

@@ -10,6 +10,7 @@
 
 #include "app/csv.h"           // number_text
 #include "app/sweep_values.h"  // check_sweep_scene
+#include "physics/parked_threads.h"
 
 namespace cb {
 
@@ -49,8 +50,8 @@ std::optional<Failure> first_failure(std::size_t count, int jobs, std::size_t pe
       }
     }
   };
-  std::vector<std::thread> pool;
-  for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(slice, t);
+  std::vector<ParkedThread> pool;
+  for (std::size_t t = 1; t < threads; ++t) pool.emplace_back([&slice, t] { slice(t); });
   slice(0);
   for (auto& t : pool) t.join();
   for (auto& f : failures)

@@ -10,6 +10,7 @@
 #include "drive/drive.h"
 #include "figures/break_maps.h"
 #include "physics/lane_schedule.h"
+#include "physics/parked_threads.h"
 #include "physics/threshold_ensemble.h"
 
 namespace cb {
@@ -121,7 +122,7 @@ void run_ensembles(const SweepPoints& points,
       }
     }
   };
-  std::vector<std::thread> pool;
+  std::vector<ParkedThread> pool;
   for (std::size_t t = 1;
        t < std::min<std::size_t>(static_cast<std::size_t>(jobs), ensembles.size()); ++t)
     pool.emplace_back(worker);

@@ -8,6 +8,7 @@
 #include <string>
 #include <thread>
 
+#include "physics/parked_threads.h"
 #include "physics/stop_flag.h"
 
 namespace cb {
@@ -83,12 +84,12 @@ void run_scheduled(const ScheduledRuns& runs, int jobs, const std::atomic<bool>*
       ++done;
     }
   };
-  std::vector<std::thread> pool;
+  std::vector<ParkedThread> pool;
   for (int t = 1; t < std::min<int>(jobs, static_cast<int>(runs.count)); ++t)
     pool.emplace_back(worker);
-  std::thread watcher;
+  ParkedThread watcher;
   if (on_progress)
-    watcher = std::thread([&] {
+    watcher = ParkedThread([&] {
       while (done < runs.count && !stop_requested(stop) && !failed) {
         on_progress(done);
         std::this_thread::sleep_for(std::chrono::milliseconds(100));

@@ -19,9 +19,9 @@
 // intervals, so the passes cost a fraction of the run and the run ends within a few steps of the
 // last member's break. A member settles as soon as it is known to cross; its crossing time is
 // bisected later with 255 others (crossing.h, finish_hermite_roots: 64 at a time on AVX-512). 10^4
-// seeds of a 30-bead chain cost ~1.2 x one run for a slow pull, 3.5 x at beta = 0.02 and ~41 x for
-// a jerk on one thread; 1.25-1.6, 2.5 and 20 x on two (each seed's own bit-exact crossing time;
-// tests/bench/README.md, sessions 31 and 32).
+// seeds of a 30-bead chain cost ~1.2 x one run for a slow pull, 3.3 x at beta = 0.02 and ~55 x for
+// a jerk on one thread; 1.2-1.6, 2.5 and 23 x on two (each seed's own bit-exact crossing time;
+// tests/bench/README.md, sessions 31, 32 and 36).
 #pragma once
 
 #include <atomic>

@@ -12,7 +12,7 @@ WorkerPool::~WorkerPool() {
     stop_ = true;
   }
   start_.notify_all();
-  for (auto& t : threads_) t.join();
+  for (ParkedThread& t : threads_) t.join();
 }
 
 void WorkerPool::run(const std::function<void(int)>& job) {

@@ -5,8 +5,9 @@
 #include <condition_variable>
 #include <functional>
 #include <mutex>
-#include <thread>
 #include <vector>
+
+#include "physics/parked_threads.h"
 
 namespace cb::detail {
 
@@ -25,7 +26,7 @@ class WorkerPool {
   void loop(int worker);
 
   int workers_;
-  std::vector<std::thread> threads_;
+  std::vector<ParkedThread> threads_;
   std::mutex mutex_;
   std::condition_variable start_, done_;
   const std::function<void(int)>* job_ = nullptr;

@@ -126,7 +126,7 @@ nice_build() {  # folder, targets...
 # pipeline ([render_cli], [video], [snapshot]) and the viewer's recorder ([viewer]). Left out: two tests that time a Ctrl-C (the [cli] one
 # signals the child after a fixed 0.5 s, before a TSan build, ~10x slower, has its handler
 # in place; the [render_cli] one wants the stop within 2 s).
-TSAN_TESTS="[cli]~SIGINT*,[rk4],[points],[blocking],[render_cli]~*Ctrl-C*,[video],[snapshot],[viewer]"
+TSAN_TESTS="[cli]~SIGINT*,[rk4],[points],[parked],[blocking],[render_cli]~*Ctrl-C*,[video],[snapshot],[viewer]"
 TSAN_SLOW="^figures command|^the docked panels cover|^temporal blocking gives|^with the overlay"
 TSAN_SLOW+="|^snapshot --overlay|^a scripted view snapshot|^a resize while playing"
 
