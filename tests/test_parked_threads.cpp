@@ -13,7 +13,7 @@
 #include <thread>
 #include <vector>
 
-#include "physics/parked_threads.h"
+#include "threads/parked_threads.h"
 
 namespace {
 

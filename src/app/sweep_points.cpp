@@ -10,7 +10,7 @@
 
 #include "app/csv.h"           // number_text
 #include "app/sweep_values.h"  // check_sweep_scene
-#include "physics/parked_threads.h"
+#include "threads/parked_threads.h"
 
 namespace cb {
 

@@ -10,7 +10,7 @@
 #include "drive/drive.h"
 #include "figures/break_maps.h"
 #include "physics/lane_schedule.h"
-#include "physics/parked_threads.h"
+#include "threads/parked_threads.h"
 #include "physics/threshold_ensemble.h"
 
 namespace cb {

@@ -5,7 +5,8 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
-#include <thread>
+
+#include "threads/parked_threads.h"
 
 namespace cb {
 
@@ -92,7 +93,7 @@ void OutputFile::commit() {
 }
 
 void flush_together(const std::vector<OutputFile*>& files) {
-  std::vector<std::thread> pool;
+  std::vector<ParkedThread> pool;
   for (std::size_t k = 1; k < files.size(); ++k) pool.emplace_back([f = files[k]] { f->flush(); });
   if (!files.empty()) files.front()->flush();
   for (auto& t : pool) t.join();

@@ -8,7 +8,7 @@
 #include <string>
 #include <thread>
 
-#include "physics/parked_threads.h"
+#include "threads/parked_threads.h"
 #include "physics/stop_flag.h"
 
 namespace cb {

@@ -7,7 +7,7 @@
 #include <mutex>
 #include <vector>
 
-#include "physics/parked_threads.h"
+#include "threads/parked_threads.h"
 
 namespace cb::detail {
 

@@ -1,4 +1,4 @@
-#include "physics/parked_threads.h"
+#include "threads/parked_threads.h"
 
 #include <pthread.h>
 
