@@ -1,4 +1,4 @@
-// Parked threads (physics/parked_threads.h): every task runs once and join() waits for it; a
+// Parked threads (threads/parked_threads.h): every task runs once and join() waits for it; a
 // thread is used again once parked; prestart_threads parks them ahead; a forked child, which
 // has none of its parent's threads, starts its own.
 #include <sys/wait.h>

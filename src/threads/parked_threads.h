@@ -1,13 +1,13 @@
 // Threads that stay parked between the jobs they run, for every parallel phase of the process
-// (a sweep's points, its ensembles and their parts, lane runs, WorkerPool).
+// (a sweep's points, its ensembles and their parts, lane runs, WorkerPool, flush_together).
 //
 // Design note: a thread started while the program computes can run milliseconds later on a VM
 // that packs new threads onto the busy vCPU until the scheduler's next balancing (this one:
-// 2.8-4 ms, PLATFORM-NOTES.md, tests/bench/README.md sessions 35 and 36), where a 10^4-seed
-// sweep's parallel phases last a few ms each; a thread already running, parked on a condition
-// variable, wakes in 0.01-0.1 ms. So a job takes a parked thread if there is one, else starts
-// one, and the thread parks again when the job is done. prestart_threads() starts them before
-// the work that will want them.
+// 0.1-3.9 ms, tests/bench/README.md sessions 35 and 36), where a 10^4-seed sweep's parallel
+// phases last a few ms each; a thread already running, parked on a condition variable, wakes in
+// 0.01-0.1 ms. So a job takes a parked thread if there is one, else starts one, and the thread
+// parks again when the job is done. prestart_threads() starts them before the work that will
+// want them. They are never joined: parked at exit, they end with the process.
 #pragma once
 
 #include <functional>
