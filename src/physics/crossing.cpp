@@ -11,6 +11,26 @@
 
 namespace cb::detail {
 
+int slope_zeros_inside(double A, double B, double C, double* zeros) {
+  int count = 0;
+  if (std::abs(A) > 1e-300) {
+    const double disc = B * B - 4.0 * A * C;
+    if (disc > 0.0) {
+      const double root = std::sqrt(disc);
+      // Stable roots of the quadratic (no cancellation).
+      const double t = -0.5 * (B + std::copysign(root, B));
+      double r1 = t / A, r2 = t != 0.0 ? C / t : r1;
+      if (r1 > r2) std::swap(r1, r2);
+      for (double r0 : {r1, r2})
+        if (r0 > 0.0 && r0 < 1.0) zeros[count++] = r0;
+    }
+  } else if (std::abs(B) > 1e-300) {
+    const double r0 = -C / B;
+    if (r0 > 0.0 && r0 < 1.0) zeros[count++] = r0;
+  }
+  return count;
+}
+
 HermiteRoot hermite_root(double p0, double p1, double m0, double m1, double h, double upper,
                          double lower) {
   HermiteRoot r;
@@ -32,35 +52,15 @@ HermiteRoot hermite_root(double p0, double p1, double m0, double m1, double h, d
   // Split [0, 1] where p' = b + 2 q s + 3 d s^2 vanishes: p is monotone on each piece, so
   // a sign change at a piece's ends is the only way to cross inside it.
   double cuts[4] = {0.0, 1.0, 1.0, 1.0};
-  int count = 1;
   const double A = 3.0 * r.d, B = 2.0 * r.q, C = r.b;
-  // Where |C| >= 4 (|A| + |B|), p' keeps C's sign on [-1, 1], and the roots below, as rounded,
-  // lie beyond 1 in size (|r| >= sqrt |C / A| or |C / B| or |C| / |t| with |t| <= 3/4 |C|, a
-  // few ulps aside): none is a cut, so the sqrt and divisions are skipped. The usual case: over
-  // one step the slope changes little.
-  if (std::abs(C) >= 4.0 * (std::abs(A) + std::abs(B))) {
-  } else if (std::abs(A) > 1e-300) {
-    const double disc = B * B - 4.0 * A * C;
-    if (disc > 0.0) {
-      const double root = std::sqrt(disc);
-      // Stable roots of the quadratic (no cancellation).
-      const double t = -0.5 * (B + std::copysign(root, B));
-      double r1 = t / A, r2 = t != 0.0 ? C / t : r1;
-      if (r1 > r2) std::swap(r1, r2);
-      for (double r0 : {r1, r2})
-        if (r0 > 0.0 && r0 < 1.0) cuts[count++] = r0;
-    }
-  } else if (std::abs(B) > 1e-300) {
-    const double r0 = -C / B;
-    if (r0 > 0.0 && r0 < 1.0) cuts[count++] = r0;
-  }
-  cuts[count++] = 1.0;
+  const int count = 1 + (slope_keeps_sign(A, B, C) ? 0 : slope_zeros_inside(A, B, C, cuts + 1));
+  cuts[count] = 1.0;
   // The first piece where a bound is reached holds the crossing: its brackets.
   auto add = [&](double lo, double hi, bool is_down) {
     r.lo[r.brackets] = lo, r.hi[r.brackets] = hi, r.down[r.brackets] = is_down;
     ++r.brackets;
   };
-  for (int k = 0; k + 1 < count && r.brackets == 0; ++k) {
+  for (int k = 0; k < count && r.brackets == 0; ++k) {
     const double lo = cuts[k], hi = cuts[k + 1];
     if (up(lo) < 0.0 && up(hi) >= 0.0) add(lo, hi, false);
     if (!stretch_only && down(lo) < 0.0 && down(hi) >= 0.0) add(lo, hi, true);

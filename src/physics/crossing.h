@@ -2,6 +2,7 @@
 // rule every kernel uses to decide that a spring may reach it (kernels, lanes, Integrator).
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <functional>
 #include <vector>
@@ -57,6 +58,17 @@ struct HermiteRoot {
 };
 HermiteRoot hermite_root(double p0, double p1, double m0, double m1, double h, double upper,
                          double lower);
+// Where p' = C + B s + A s^2 vanishes inside (0, 1), as hermite_root cuts [0, 1]: the stable
+// roots of the quadratic (or -C / B where A is negligible), ascending into `zeros` (room for 2);
+// their count.
+int slope_zeros_inside(double A, double B, double C, double* zeros);
+// hermite_root's shortcut: where |C| >= 4 (|A| + |B|), p' keeps C's sign on [-1, 1], and the
+// roots slope_zeros_inside would round lie beyond 1 in size (|r| >= sqrt |C / A| or |C / B| or
+// |C| / |t| with |t| <= 3/4 |C|, a few ulps aside): it would find none, so the sqrt and the
+// divisions are skipped. The usual case: over one step the slope changes little.
+inline bool slope_keeps_sign(double A, double B, double C) {
+  return std::abs(C) >= 4.0 * (std::abs(A) + std::abs(B));
+}
 void finish_hermite_roots(HermiteRoot* roots, std::size_t count);
 // The same for the x86-64 baseline (crossing.cpp), the AVX2 and the AVX-512 paths
 // (crossing_avx2.cpp, crossing_avx512.cpp), which finish_hermite_roots picks by active_simd()
