@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <catch2/catch.hpp>
 #include <chrono>
@@ -78,6 +79,30 @@ TEST_CASE("parked threads run every task and are used again", "[parked]") {
     CHECK(b.joinable());
   }
   CHECK(done);
+}
+
+TEST_CASE("a join waits for its own task, not the slot's next one", "[parked]") {
+  // The first task's thread parks before its joiner looks; the next task takes that thread
+  // (the last parked goes first) and blocks until the first join has returned.
+  std::thread::id first_id, second_id;
+  const int parked_before = cb::parked_thread_count();
+  cb::ParkedThread first([&] { first_id = std::this_thread::get_id(); });
+  REQUIRE(parked_at_least(std::max(parked_before, 1)));  // its thread back (or a new one)
+  std::atomic<bool> joined{false};
+  cb::ParkedThread second([&] {
+    second_id = std::this_thread::get_id();
+    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(3);
+    while (!joined && std::chrono::steady_clock::now() < until)
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  });
+  const auto start = std::chrono::steady_clock::now();
+  first.join();
+  const double waited =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  joined = true;
+  second.join();
+  CHECK(second_id == first_id);  // the same thread: the case this test is about
+  CHECK(waited < 1.0);           // not the 3 s the second task waits for it
 }
 
 TEST_CASE("prestart_threads parks threads ahead of the work", "[parked]") {

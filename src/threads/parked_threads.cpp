@@ -3,6 +3,7 @@
 #include <pthread.h>
 
 #include <condition_variable>
+#include <cstdint>
 #include <exception>
 #include <mutex>
 #include <thread>
@@ -11,12 +12,14 @@
 
 namespace cb {
 
-// One thread's mailbox: a job in, and whether it is done.
+// One thread's mailbox: its jobs are numbered as they are handed in (given) and as they finish
+// (finished), so that a joiner waits for its own job's number: the slot may be handed its next
+// job before the last joiner has woken.
 struct ParkedSlot {
   std::mutex mutex;
   std::condition_variable changed;
   std::function<void()> task;
-  bool has_task = false, done = false;
+  std::uint64_t given = 0, finished = 0;
 };
 
 namespace {
@@ -48,7 +51,7 @@ void serve(ParkedSlot* slot) {
     std::function<void()> task;
     {
       std::unique_lock lock(slot->mutex);
-      slot->changed.wait(lock, [&] { return slot->has_task; });
+      slot->changed.wait(lock, [&] { return slot->given > slot->finished; });
       task = std::move(slot->task);
     }
     try {
@@ -59,8 +62,7 @@ void serve(ParkedSlot* slot) {
     task = nullptr;  // its captures released before the joiner returns
     {
       std::lock_guard lock(slot->mutex);
-      slot->has_task = false;
-      slot->done = true;
+      slot->finished = slot->given;
     }
     slot->changed.notify_all();
     park(slot);
@@ -88,8 +90,7 @@ ParkedThread::ParkedThread(std::function<void()> task) {
   {
     std::lock_guard lock(slot_->mutex);
     slot_->task = std::move(task);
-    slot_->has_task = true;
-    slot_->done = false;
+    job_ = ++slot_->given;
   }
   slot_->changed.notify_all();
 }
@@ -98,6 +99,7 @@ ParkedThread& ParkedThread::operator=(ParkedThread&& other) noexcept {
   if (this != &other) {
     join();
     slot_ = std::exchange(other.slot_, nullptr);
+    job_ = other.job_;
   }
   return *this;
 }
@@ -105,7 +107,7 @@ ParkedThread& ParkedThread::operator=(ParkedThread&& other) noexcept {
 void ParkedThread::join() {
   if (slot_ == nullptr) return;
   std::unique_lock lock(slot_->mutex);
-  slot_->changed.wait(lock, [&] { return slot_->done; });
+  slot_->changed.wait(lock, [&] { return slot_->finished >= job_; });
   slot_ = nullptr;
 }
 

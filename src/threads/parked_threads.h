@@ -10,6 +10,7 @@
 // want them. They are never joined: parked at exit, they end with the process.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 
 namespace cb {
@@ -22,7 +23,9 @@ class ParkedThread {
  public:
   ParkedThread() = default;
   explicit ParkedThread(std::function<void()> task);
-  ParkedThread(ParkedThread&& other) noexcept : slot_(other.slot_) { other.slot_ = nullptr; }
+  ParkedThread(ParkedThread&& other) noexcept : slot_(other.slot_), job_(other.job_) {
+    other.slot_ = nullptr;
+  }
   ParkedThread& operator=(ParkedThread&& other) noexcept;
   ParkedThread(const ParkedThread&) = delete;
   ParkedThread& operator=(const ParkedThread&) = delete;
@@ -33,6 +36,7 @@ class ParkedThread {
 
  private:
   ParkedSlot* slot_ = nullptr;
+  std::uint64_t job_ = 0;  // its number on the slot
 };
 
 // Starts threads until `count` are parked, so that the next parallel phase finds them running.
