@@ -11,7 +11,6 @@
 #include <cstdlib>
 #include <exception>
 #include <mutex>
-#include <thread>
 
 #include "app/commands.h"
 #include "app/csv.h"
@@ -75,8 +74,7 @@ long peak_memory_kib() {
 int sweep_command(const SweepOptions& o) {
   // The sweep's threads, started now and parked, so that its first parallel phase, a few ms
   // from here, finds them running (parked_threads.h: a VM can start a thread ms late).
-  prestart_threads((o.jobs > 0 ? o.jobs : static_cast<int>(std::thread::hardware_concurrency())) -
-                   1);
+  prestart_threads(threads_for(o.jobs) - 1);
   check_sweep_solver(o.solver);
   if (record_path(o.csv) == o.csv)
     throw SceneError("--csv " + o.csv + ": the sweep's record goes to " + o.csv +

@@ -5,7 +5,6 @@
 #include <limits>
 #include <optional>
 #include <stdexcept>
-#include <thread>
 #include <unordered_map>
 
 #include "app/csv.h"           // number_text
@@ -34,9 +33,8 @@ struct Failure {
 template <class Work>
 std::optional<Failure> first_failure(std::size_t count, int jobs, std::size_t per_thread,
                                      const Work& work) {
-  const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
   const std::size_t threads = std::clamp<std::size_t>(
-      std::min(jobs > 0 ? static_cast<std::size_t>(jobs) : cores, count / per_thread), 1,
+      std::min(static_cast<std::size_t>(threads_for(jobs)), count / per_thread), 1,
       std::max<std::size_t>(count, 1));
   std::vector<std::optional<Failure>> failures(threads);
   auto slice = [&](std::size_t t) {

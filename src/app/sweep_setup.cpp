@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <thread>
 
 #include "app/csv.h"
 #include "exact/first_break.h"    // FirstBreak
 #include "resources/resources.h"  // kMaxSweepValues
 #include "scene/scene_hash.h"
+#include "threads/parked_threads.h"
 #include "version.h"  // CHAINBREAK_VERSION (src/cmake/version.cmake)
 
 namespace cb {
@@ -89,8 +89,7 @@ MemoryEstimate sweep_memory(const SweepOptions& o, const Grid& grid, PointRange 
   for (const auto& axis : grid.axes)
     if (axis.key == "chain.beads")
       beads = std::max(beads, *std::max_element(axis.values.begin(), axis.values.end()));
-  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  const double jobs = std::min<double>(o.jobs > 0 ? o.jobs : cores, range.size());
+  const double jobs = std::min<double>(threads_for(o.jobs), range.size());
   const double points = static_cast<double>(range.size());
   MemoryEstimate m;
   // Every point's scene is built (and checked) before the first run; a table drive's rows

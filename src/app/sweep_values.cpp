@@ -5,13 +5,12 @@
 #include <map>
 #include <mutex>
 #include <stdexcept>
-#include <thread>
 
 #include "drive/drive.h"
 #include "figures/break_maps.h"
 #include "physics/lane_schedule.h"
-#include "threads/parked_threads.h"
 #include "physics/threshold_ensemble.h"
+#include "threads/parked_threads.h"
 
 namespace cb {
 
@@ -74,7 +73,7 @@ std::vector<std::vector<std::size_t>> ensembles_of(const SweepPoints& points) {
 void run_ensembles(const SweepPoints& points,
                    const std::vector<std::vector<std::size_t>>& ensembles, int jobs,
                    const std::atomic<bool>* stop, std::vector<FirstBreak>& results) {
-  if (jobs <= 0) jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  jobs = threads_for(jobs);
   // Fewer ensembles than threads (one beta): each shares its members out on the idle ones.
   const int workers =
       std::max(1, jobs / static_cast<int>(std::max<std::size_t>(1, ensembles.size())));

@@ -12,6 +12,7 @@
 #include "physics/integrator.h"
 #include "physics/run_loop.h"
 #include "physics/stop_flag.h"
+#include "threads/parked_threads.h"
 
 namespace cb {
 
@@ -32,7 +33,7 @@ FirstBreak simulated_first_break(const ChainParams& chain, const DriveDesc& driv
 std::vector<FirstBreak> parallel_first_breaks(int count, int jobs,
                                               const std::function<FirstBreak(int)>& fn) {
   std::vector<FirstBreak> out(static_cast<std::size_t>(std::max(count, 0)));
-  if (jobs <= 0) jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  jobs = threads_for(jobs);
   std::atomic<int> next{0};
   std::exception_ptr failure;
   std::mutex failure_mutex;

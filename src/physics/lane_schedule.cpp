@@ -8,8 +8,8 @@
 #include <string>
 #include <thread>
 
-#include "threads/parked_threads.h"
 #include "physics/stop_flag.h"
+#include "threads/parked_threads.h"
 
 namespace cb {
 
@@ -36,7 +36,7 @@ LaneSchedule schedule_lanes(const std::vector<int>& beads, bool lanes,
 
 void run_scheduled(const ScheduledRuns& runs, int jobs, const std::atomic<bool>* stop,
                    const std::function<void(std::size_t)>& on_progress) {
-  if (jobs <= 0) jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  jobs = threads_for(jobs);
   const LaneSchedule plan = schedule_lanes(runs.beads, runs.lanes, runs.alone);
   // Every worker takes values from the lane groups first (a lane that ends takes the next value
   // of its group), then the values run one by one.

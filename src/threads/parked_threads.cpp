@@ -2,6 +2,7 @@
 
 #include <pthread.h>
 
+#include <algorithm>
 #include <condition_variable>
 #include <cstdint>
 #include <exception>
@@ -109,6 +110,10 @@ void ParkedThread::join() {
   std::unique_lock lock(slot_->mutex);
   slot_->changed.wait(lock, [&] { return slot_->finished >= job_; });
   slot_ = nullptr;
+}
+
+int threads_for(int jobs) {
+  return jobs > 0 ? jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }
 
 void prestart_threads(int count) {

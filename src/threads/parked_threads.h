@@ -39,6 +39,9 @@ class ParkedThread {
   std::uint64_t job_ = 0;  // its number on the slot
 };
 
+// --jobs' rule, one place: `jobs` threads, or one a core where jobs <= 0 (at least one).
+int threads_for(int jobs);
+
 // Starts threads until `count` are parked, so that the next parallel phase finds them running.
 void prestart_threads(int count);
 // How many are parked now (a thread whose job is done parks just after its joiner returns).
