@@ -16,6 +16,7 @@
 #include "physics/run_loop.h"
 #include "physics/threshold_draw.h"
 #include "physics/threshold_ensemble.h"
+#include "physics/threshold_levels.h"
 #include "test_support.h"
 
 namespace {
@@ -117,6 +118,114 @@ TEST_CASE("a slow pull's members break one after another, and no member is misse
   drive.type = cb::DriveType::Ramp;
   drive.beta = 0.002;
   CHECK(check_members(members.front(), members, drive, 0.01, std::llround(700.0 / 0.01)) == 300);
+}
+
+TEST_CASE("an ensemble that draws its seeds' thresholds itself gives the same bits",
+          "[ensemble][flaws]") {
+  // ThresholdEnsemble::drawn: the members' thresholds drawn by seed, each only where a test needs
+  // it, the members ordered and filtered by the levels of their u (threshold_levels.h), not of
+  // their thresholds. Against the same ensemble handed every drawn threshold (itself Integrator's
+  // alone: the tests above), member by member, bit for bit; and a few seeds against Integrator.
+  // A slow pull, the scene's, a fast one and a jerk; moduli 1.5 (spread: low u far below the
+  // float levels' resolution) and 6.
+  for (const double shape : {1.5, 6.0})
+    for (const double beta : {0.002, 0.02, 0.1, 1.0})
+      for (const auto mode : {cb::BreakMode::Abs, cb::BreakMode::Stretch}) {
+        INFO("shape " << shape << " beta " << beta << " stretch "
+                      << (mode == cb::BreakMode::Stretch));
+        constexpr int kSeeds = 1500;
+        constexpr double kScale = 0.8;
+        std::vector<std::uint64_t> seeds;
+        std::vector<double> phi;
+        for (int k = 0; k < kSeeds; ++k) {
+          seeds.push_back(1000003u * static_cast<std::uint64_t>(k) + 7u);
+          const std::vector<double> row =
+              cb::draw_thresholds(cb::ThresholdDist::Weibull, kScale, shape, seeds.back(), 30);
+          phi.insert(phi.end(), row.begin(), row.end());
+        }
+        cb::ThresholdEnsemble e;
+        e.chain = flawed(1, shape, mode);
+        e.chain.gamma = 0.05;
+        cb::DriveDesc drive;
+        drive.type = cb::DriveType::Ramp;
+        drive.beta = beta;
+        e.forcing = cb::make_forcing(drive);
+        e.dt = 0.01;
+        e.last_step = std::llround((6.0 / beta) / 0.01);
+        e.thresholds = phi;
+        const std::vector<cb::LaneEnd> given = cb::ensemble_first_breaks(e);
+        cb::ThresholdEnsemble d = e;
+        d.thresholds = {};
+        d.drawn = {kScale, shape, seeds};
+        REQUIRE(d.members() == static_cast<std::size_t>(kSeeds));
+        const std::vector<cb::LaneEnd> drawn = cb::ensemble_first_breaks(d);
+        REQUIRE(drawn.size() == given.size());
+        std::size_t same = 0, broke = 0;
+        for (std::size_t m = 0; m < given.size(); ++m) {
+          broke += given[m].kind == cb::LaneEnd::Kind::Broke;
+          same += drawn[m].kind == given[m].kind &&
+                  drawn[m].first.spring == given[m].first.spring &&
+                  std::memcmp(&drawn[m].first.tau, &given[m].first.tau, sizeof(double)) == 0 &&
+                  drawn[m].first.step == given[m].first.step;
+        }
+        CHECK(same == given.size());
+        CHECK(broke == given.size());
+        // Two parts (threads) draw their own members.
+        const std::vector<cb::LaneEnd> two = cb::ensemble_first_breaks(d, nullptr, 2);
+        std::size_t same_two = 0;
+        for (std::size_t m = 0; m < given.size(); ++m)
+          same_two += two[m].kind == given[m].kind &&
+                      two[m].first.spring == given[m].first.spring &&
+                      two[m].first.tau == given[m].first.tau;
+        CHECK(same_two == given.size());
+        for (std::size_t m = 0; m < 3; ++m) {
+          cb::ChainParams p = e.chain;
+          p.thresholds.assign(phi.begin() + static_cast<std::ptrdiff_t>(30 * m),
+                              phi.begin() + static_cast<std::ptrdiff_t>(30 * m + 30));
+          p.threshold = *std::min_element(p.thresholds.begin(), p.thresholds.end());
+          p.normalize();
+          const cb::LaneEnd a = alone(p, drive, 0.01, e.last_step);
+          CHECK(drawn[m].first.spring == a.first.spring);
+          CHECK(drawn[m].first.tau == a.first.tau);
+        }
+      }
+}
+
+TEST_CASE("a drawn threshold's level is at or below the level of any reach at or above it",
+          "[ensemble][flaws]") {
+  // threshold_levels.h: a member drawn by seed is near a spring's bound when the level of its u
+  // is at or below the level of the spring's largest reach there. A reach equal to the draw
+  // itself is the tightest: the draw's level must not lie above that reach's, or the member
+  // would be judged far from a bound it reaches and miss its break. u at random, and u at and
+  // around every 64th level's edge (where F's rounding decides), for several scales and moduli.
+  int tested = 0, at_edge = 0, within_two = 0;
+  for (const double shape : {0.5, 1.0, 1.5, 6.0, 40.0})
+    for (const double scale : {1.0, 0.37, 2.5e3}) {
+      INFO("shape " << shape << " scale " << scale);
+      std::vector<std::uint64_t> bits;
+      for (std::uint64_t k = 0; k < 40000; ++k)
+        bits.push_back(cb::uniform_bits(cb::seed_stream(k), 1));
+      for (std::uint64_t level = 1; level < 32768; level += 64)
+        for (const std::int64_t off : {-3, -1, 0, 1, 2, 1000})
+          bits.push_back(static_cast<std::uint64_t>(static_cast<std::int64_t>(level << 38) + off));
+      int above = 0;
+      for (const std::uint64_t b : bits) {
+        const double phi = cb::weibull_threshold(scale, shape, cb::uniform_of_bits(b));
+        const auto mine = cb::detail::drawn_level(b);
+        const auto reach = cb::detail::drawn_level_of_reach(phi, scale, shape);
+        above += mine > reach;
+        at_edge += mine == reach;
+        within_two += mine + 2 >= reach;
+        ++tested;
+      }
+      CHECK(above == 0);
+    }
+  CHECK(tested > 600000);
+  // The margin is tight: a draw's level is at most two below its reach's (one for F's rounding,
+  // one where the room for W's ulps carries F past a level's edge), and just above an edge, the
+  // reach's own.
+  CHECK(within_two == tested);
+  CHECK(at_edge > 10);
 }
 
 TEST_CASE("an ensemble over a uniform chain's threshold gives Integrator's breaks", "[ensemble]") {

@@ -3,7 +3,7 @@
 
 #include <array>
 #include <bit>
-#include <cmath>  // sqrt, abs: correctly rounded, exact
+#include <cmath>  // sqrt, abs: correctly rounded, exact (expm1, pow: bounds only)
 #include <cstdint>
 #include <numbers>
 
@@ -21,14 +21,6 @@ namespace {
 
 #include "physics/portable_lanes.inc"
 
-// SplitMix64's finaliser: a bijection of 64-bit words whose every output bit depends on every
-// input bit (Steele, Lea and Flood, "Fast splittable pseudorandom number generators", 2014).
-std::uint64_t mix(std::uint64_t z) {
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
-
 // Phi(x), the standard normal CDF.
 double normal_cdf(double x) {
   return 0.5 * portable::erfc(-x / std::sqrt(2.0));
@@ -36,28 +28,32 @@ double normal_cdf(double x) {
 
 }  // namespace
 
-namespace {
-
-// The seed is mixed first, so that neighbouring seeds give unrelated streams (once for all of a
-// chain's springs), then the index on a Weyl step of its own.
-std::uint64_t stream_of(std::uint64_t seed) {
-  return mix(seed + 0x9E3779B97F4A7C15ull);
-}
-double uniform_in(std::uint64_t stream, std::uint64_t index) {
-  const std::uint64_t bits = mix(stream ^ (index * 0xD1B54A32D192ED03ull));
-  return (static_cast<double>(bits >> 11) + 0.5) * 0x1.0p-53;
-}
-
-}  // namespace
-
 double uniform_open01(std::uint64_t seed, std::uint64_t index) {
-  return uniform_in(stream_of(seed), index);
+  return uniform_of_bits(uniform_bits(seed_stream(seed), index));
 }
 
 double weibull_quantile(double u, double shape) {
   double t = 0.0;
   const auto parts = weibull_parts<double, std::uint64_t>(u, shape, 1.0 / shape, &t);
   return scaled_anywhere(parts, exp_in_range(t));
+}
+
+double weibull_threshold(double scale, double shape, double u) {
+  // weibull_quantiles' value, then the scale, as draw_threshold_rows multiplies it.
+  return weibull_quantile(u, shape) * scale;
+}
+
+bool weibull_draws_positive_finite(double scale, double shape) {
+  // The quantile rises with u, to a few ulps: its values at the least and the largest u bound
+  // every draw's, with room for those ulps.
+  const double least = weibull_threshold(scale, shape, uniform_of_bits(0));
+  const double most =
+      weibull_threshold(scale, shape, uniform_of_bits((std::uint64_t{1} << 53) - 1));
+  return least >= 1e-300 && most <= 1e300;
+}
+
+double weibull_cdf(double x, double shape) {
+  return -std::expm1(-std::pow(x, shape));
 }
 
 namespace {
@@ -107,8 +103,9 @@ void draw_threshold_rows(ThresholdDist dist, double scale, double shape, const s
   const auto count = static_cast<std::size_t>(n);
   if (dist == ThresholdDist::Weibull) {
     for (std::size_t r = 0; r < rows; ++r) {
-      const std::uint64_t stream = stream_of(seeds[r]);
-      for (std::size_t j = 1; j <= count; ++j) out[r * count + j - 1] = uniform_in(stream, j);
+      const std::uint64_t stream = seed_stream(seeds[r]);
+      for (std::size_t j = 1; j <= count; ++j)
+        out[r * count + j - 1] = uniform_of_bits(uniform_bits(stream, j));
     }
     weibull_quantiles(out, rows * count, shape, out);
     for (std::size_t i = 0; i < rows * count; ++i) out[i] *= scale;
@@ -117,9 +114,9 @@ void draw_threshold_rows(ThresholdDist dist, double scale, double shape, const s
   // Normal: z > -1/shape keeps 1 + shape z > 0; u is mapped into (Phi(-1/shape), 1).
   const double cut = normal_cdf(-1.0 / shape);
   for (std::size_t r = 0; r < rows; ++r) {
-    const std::uint64_t stream = stream_of(seeds[r]);
+    const std::uint64_t stream = seed_stream(seeds[r]);
     for (std::size_t j = 1; j <= count; ++j) {
-      const double u = uniform_in(stream, j);
+      const double u = uniform_of_bits(uniform_bits(stream, j));
       out[r * count + j - 1] = scale * (1.0 + shape * normal_quantile(cut + u * (1.0 - cut)));
     }
   }

@@ -25,6 +25,53 @@ inline constexpr int kMaxDrawnBeads = 1'000'000;
 
 // A uniform number in (0, 1), never 0 or 1: 53 random bits of hash(seed, index), centred.
 double uniform_open01(std::uint64_t seed, std::uint64_t index);
+// The same in two steps, for many indices of one seed: the seed's stream (mixed once), then
+// index i's 53 bits k, u = (k + 1/2) 2^-53 (uniform_of_bits). k is monotone in u: its top bits
+// order the draws without drawing them (threshold_levels.h). Inline: an ensemble's levels take
+// them 3 x 10^5 times, vectorised (threshold_ensemble_reach.inc).
+//
+// SplitMix64's finaliser: a bijection of 64-bit words whose every output bit depends on every
+// input bit (Steele, Lea and Flood, "Fast splittable pseudorandom number generators", 2014). The
+// seed is mixed first, so that neighbouring seeds give unrelated streams, then the index on a
+// Weyl step of its own.
+// In place, on U: std::uint64_t or a vector of them (GCC's vector extensions: several keys at
+// once, the same bits in each lane; by reference, as a vector wider than the target's registers
+// has no calling convention).
+template <class U>
+inline void splitmix_in_place(U& z) {
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  z = z ^ (z >> 31);
+}
+inline std::uint64_t splitmix_finaliser(std::uint64_t z) {
+  splitmix_in_place(z);
+  return z;
+}
+inline std::uint64_t seed_stream(std::uint64_t seed) {
+  return splitmix_finaliser(seed + 0x9E3779B97F4A7C15ull);
+}
+// Index i's key (i C, the Weyl step), the same for every stream: kept where many streams take
+// the same indices.
+inline std::uint64_t index_key(std::uint64_t index) {
+  return index * 0xD1B54A32D192ED03ull;
+}
+// Index keys' bits in place (U as splitmix_in_place's).
+template <class U>
+inline void uniform_bits_of_keys(std::uint64_t stream, U& key) {
+  key ^= stream;
+  splitmix_in_place(key);
+  key >>= 11;
+}
+inline std::uint64_t uniform_bits_of_key(std::uint64_t stream, std::uint64_t key) {
+  uniform_bits_of_keys(stream, key);
+  return key;
+}
+inline std::uint64_t uniform_bits(std::uint64_t stream, std::uint64_t index) {
+  return uniform_bits_of_key(stream, index_key(index));
+}
+inline double uniform_of_bits(std::uint64_t bits) {
+  return (static_cast<double>(bits) + 0.5) * 0x1.0p-53;
+}
 
 // Weibull of modulus `shape` and scale 1: F(x) = 1 - exp(-x^shape), x = (-ln(1 - u))^(1/shape).
 double weibull_quantile(double u, double shape);
@@ -37,6 +84,15 @@ void weibull_quantiles(const double* u, std::size_t n, double shape, double* out
 namespace detail::avx512 {
 void weibull_quantiles(const double* u, std::size_t n, double shape, double* out);
 }
+
+// A Weibull threshold as draw_threshold_rows draws it, the same bits: scale x Weibull(shape) at u.
+double weibull_threshold(double scale, double shape, double u);
+// Whether scale x Weibull(shape) is above zero and finite for every u a seed can give
+// (draw_threshold_rows' draws: then no draw needs a check).
+bool weibull_draws_positive_finite(double scale, double shape);
+// The Weibull CDF F(x) = 1 - exp(-x^shape), with the C library's functions: for bounds on the
+// draws (u <= F(x) where x <= the quantile), never for a draw.
+double weibull_cdf(double x, double shape);
 
 // The standard normal's inverse CDF, Phi^-1(p) for p in (0, 1), to a few ulps (Newton's
 // iteration on Phi(x) = erfc(-x / sqrt 2) / 2).

@@ -18,7 +18,9 @@
 #include "physics/integrator.h"
 #include "physics/simd.h"
 #include "physics/stop_flag.h"
+#include "physics/threshold_draw.h"
 #include "physics/threshold_ensemble_reach.h"
+#include "physics/threshold_levels.h"
 #include "physics/worker_pool.h"
 
 namespace cb {
@@ -33,6 +35,10 @@ namespace sse2 {
 SpringReaches spring_reaches_for_cpu() {
   return by_simd<SpringReaches>(active_simd(), sse2::spring_reaches, avx2::spring_reaches,
                                 avx512::spring_reaches);
+}
+DrawnLevels drawn_levels_for_cpu() {
+  return by_simd<DrawnLevels>(active_simd(), sse2::drawn_levels, avx2::drawn_levels,
+                              avx512::drawn_levels);
 }
 }  // namespace detail
 
@@ -138,22 +144,14 @@ SpringEnds spring_ends(const IntervalRing::Ends& e, std::size_t i) {
   return {e.psi0[i] - xl, e.psi1[i] - nl, e.vel0[i] - vl, e.vel1[i] - wl};
 }
 
-// A threshold or reach as a 15-bit level, monotone in it: x <= y gives level(x) <= level(y), so
-// a member none of whose levels reaches its spring's level cannot reach its bound. The level is
-// the exponent and first 11 bits of the mantissa of x as a float (rounding is monotone), from
-// 2^-8 times `base` up, clamped. A member's levels go in words of 32 (64 bytes: one cache line
-// where 30 thresholds fill four).
-using Level = std::int16_t;
-inline constexpr std::size_t kWord = 32;
-inline constexpr Level kTopLevel = 32767;
-std::int32_t level_base(double scale) {
-  return (std::bit_cast<std::int32_t>(static_cast<float>(scale)) >> 12) - (8 << 11);
-}
-// x >= 0 (+0 for a reach at rest); +inf and NaN come out at the top.
-Level level_of(double x, std::int32_t base) {
-  const std::int32_t bits = std::bit_cast<std::int32_t>(static_cast<float>(x)) >> 12;
-  return static_cast<Level>(std::clamp(bits - base, 0, std::int32_t{kTopLevel}));
-}
+inline constexpr std::size_t kWord = 32;  // levels a word: a member's in words of 32
+using detail::drawn_level;
+using detail::drawn_level_of_reach;
+using detail::kTopLevel;
+using detail::Level;
+using detail::level_base;
+using detail::level_of;
+
 // Bit j set where level[j] <= top[j], for a word of levels.
 std::uint32_t at_or_below(const Level* level, const Level* top) {
 #if defined(__SSE2__)
@@ -199,7 +197,15 @@ class Ensemble {
         stretch_(e.chain.break_on == BreakMode::Stretch),
         ring_(ring),
         length_(static_cast<std::size_t>(ring.length())),
-        phi_(e.thresholds.data() + first * n_),
+        drawn_(e.thresholds.empty()),
+        weibull_(e.drawn),
+        seeds_(drawn_ ? e.drawn.seeds.data() + first : nullptr),
+        phi_(drawn_ ? nullptr : e.thresholds.data() + first * n_),
+        // Drawn rows: not value-initialised, each value written when drawn (has_).
+        rows_(drawn_ ? new double[count * n_] : nullptr),
+        has_(drawn_ ? count * words_ : 0, 0),
+        drawn_levels_(detail::drawn_levels_for_cpu()),
+        keys_(drawn_ ? words_ * kWord : 0),
         ends_(count),
         joined_(count, 0),
         by_key_(groups_ * count),
@@ -212,11 +218,16 @@ class Ensemble {
         levels_(count * words_ * kWord),
         top_levels_(words_ * kWord),
         spring_reaches_(detail::spring_reaches_for_cpu()) {
+    for (std::size_t j = 0; j < keys_.size(); ++j) keys_[j] = index_key(j + 1);
     // Each member's levels and each group's lowest, then the members in order of it.
     std::vector<int> keys(groups_ * count);
     std::vector<Level> lowest(words_ * kWord / kGroup);
     for (std::size_t m = 0; m < count; ++m) {
-      levels_of_member(phi_ + m * n_, levels_.data() + m * words_ * kWord, lowest.data());
+      Level* level = levels_.data() + m * words_ * kWord;
+      if (drawn_)
+        drawn_levels_of_member(seeds_[m], level, lowest.data());
+      else
+        levels_of_member(phi_ + m * n_, level, lowest.data());
       for (std::size_t g = 0; g < groups_; ++g) {
         keys[g * count + m] = lowest[g] >> kKeyShift;
         ++key_end_[g * kKeys + static_cast<std::size_t>(lowest[g] >> kKeyShift)];
@@ -261,7 +272,9 @@ class Ensemble {
     }
     taken_ = upto;
     // The members whose lowest level in a group the group's highest reach's has passed join.
-    for (std::size_t j = 0; j < n_; ++j) top_levels_[j] = level_of(top_[j], base_);
+    for (std::size_t j = 0; j < n_; ++j)
+      top_levels_[j] = drawn_ ? drawn_level_of_reach(top_[j], weibull_.scale, weibull_.shape)
+                              : level_of(top_[j], base_);
     const std::size_t members = ends_.size();
     for (std::size_t g = 0; g < groups_; ++g) {
       const auto highest = *std::max_element(
@@ -301,6 +314,7 @@ class Ensemble {
       }
     }
     open_.resize(kept);
+    if (drawn_) draw_near();
     for (std::size_t k = 0; k < near_.size(); ++k) {
       if (k + 4 < near_.size()) prefetch_row(near_[k + 4]);
       if (settle(near_[k], near_springs_.data() + k * words_, from, count)) {
@@ -365,6 +379,52 @@ class Ensemble {
       lowest[g] = *std::min_element(level + g * group_, level + std::min(n_, g * group_ + group_));
   }
 
+  // The same for a member drawn by seed, of its u.
+  void drawn_levels_of_member(std::uint64_t seed, Level* __restrict level,
+                              Level* __restrict lowest) const {
+    // Every word's levels drawn (a whole number of vectors), the padding's then set.
+    drawn_levels_(seed_stream(seed), keys_.data(), words_ * kWord, level);
+    for (std::size_t j = n_; j < words_ * kWord; ++j) level[j] = kTopLevel;
+    for (std::size_t g = 0; g < groups_; ++g)
+      lowest[g] = *std::min_element(level + g * group_, level + std::min(n_, g * group_ + group_));
+  }
+
+  // Member m's thresholds: the caller's, or those drawn by seed so far (draw_near).
+  const double* row_of(int m) const {
+    return (drawn_ ? rows_.get() : phi_) + static_cast<std::size_t>(m) * n_;
+  }
+
+  // Drawn by seed: the thresholds the near members' levels flag (near_springs_) and that are not
+  // drawn yet, all at once (weibull_quantiles' lanes: a tenth of a scalar draw's time), the only
+  // ones settle() reads. About one a member at beta = 0.02: of 3 x 10^5, ~10^4 are drawn.
+  void draw_near() {
+    draw_u_.clear();
+    draw_at_.clear();
+    for (std::size_t k = 0; k < near_.size(); ++k) {
+      const auto m = static_cast<std::size_t>(near_[k]);
+      std::uint32_t* has = has_.data() + m * words_;
+      std::uint64_t stream = 0;
+      bool streamed = false;
+      for (std::size_t w = 0; w < words_; ++w) {
+        for (std::uint32_t left = near_springs_[k * words_ + w] & ~has[w]; left != 0;
+             left &= left - 1) {
+          const std::size_t j = w * kWord + static_cast<std::size_t>(std::countr_zero(left));
+          if (!streamed) {
+            stream = seed_stream(seeds_[m]);
+            streamed = true;
+          }
+          draw_u_.push_back(uniform_of_bits(uniform_bits(stream, j + 1)));
+          draw_at_.push_back(m * n_ + j);
+        }
+        has[w] |= near_springs_[k * words_ + w];
+      }
+    }
+    // weibull_threshold's bits: the quantile, then the scale.
+    weibull_quantiles(draw_u_.data(), draw_u_.size(), weibull_.shape, draw_u_.data());
+    for (std::size_t i = 0; i < draw_u_.size(); ++i)
+      rows_[draw_at_[i]] = draw_u_[i] * weibull_.scale;
+  }
+
   // The first of the window's intervals [0, n) (from `from` on) whose reach of spring j + 1 is
   // not below x; n when none is. Where some is, its block of 16 is the first whose spring's
   // largest (coarse_) is not below x, the blocks counted (a count vectorises; a binary search's
@@ -383,7 +443,7 @@ class Ensemble {
   // Member m's thresholds into the cache a few members ahead (each row its own lines; the
   // list's gaps defeat the hardware's stride prefetch).
   void prefetch_row(int m) const {
-    const double* row = phi_ + static_cast<std::size_t>(m) * n_;
+    const double* row = row_of(m);
     for (std::size_t b = 0; b < n_ * sizeof(double); b += 64) __builtin_prefetch(row + b / 8);
     __builtin_prefetch(row + n_ - 1);
   }
@@ -395,7 +455,7 @@ class Ensemble {
   // its crossing times are bisected later with many other members' (finish), a group of lanes
   // at a time. The same roots and the same earliest rule, so the same spring and tau.
   bool settle(int m, const std::uint32_t* springs, std::int64_t from, std::size_t count) {
-    const double* __restrict row = phi_ + static_cast<std::size_t>(m) * n_;
+    const double* __restrict row = row_of(m);
     // Of the springs its levels say may be near (bit j of word w: spring 32 w + j + 1), those
     // whose largest reach gets to the member's bound, and the first interval where one's reach
     // does: each spring's first searched only below the earliest found so far (a jerk's window
@@ -458,9 +518,21 @@ class Ensemble {
   std::size_t n_, words_, group_, groups_;  // springs, words of levels, springs a group, groups
   bool stretch_;
   const IntervalRing& ring_;
-  std::size_t length_;         // the ring's
-  const double* phi_;          // member m's phi_c,j at m N + j - 1
-  std::vector<LaneEnd> ends_;  // Reached until settled
+  std::size_t length_;  // the ring's
+  // Member m's phi_c,j at m N + j - 1: the caller's (phi_), or drawn by seed (drawn_: seeds_[m]
+  // with weibull_'s scale and shape) into rows_ where bit j - 1 of its has_ (words_ a member) is
+  // set.
+  bool drawn_;
+  ThresholdEnsemble::WeibullSeeds weibull_;
+  const std::uint64_t* seeds_;
+  const double* phi_;
+  std::unique_ptr<double[]> rows_;
+  std::vector<std::uint32_t> has_;
+  std::vector<double> draw_u_;        // draw_near's u, then their draws ...
+  std::vector<std::size_t> draw_at_;  // ... and where they go in rows_
+  detail::DrawnLevels drawn_levels_;  // the widest this CPU runs
+  std::vector<std::uint64_t> keys_;    // index_key(j) at j - 1, for words_ kWord springs
+  std::vector<LaneEnd> ends_;         // Reached until settled
   // Each member's state: waiting to join the tests, open in them (open_), settled.
   enum : char { kWaiting, kOpen, kSettled };
   std::vector<char> joined_;
@@ -549,10 +621,16 @@ std::vector<LaneEnd> first_breaks_of_part(const ThresholdEnsemble& e, std::size_
 
 }  // namespace
 
+std::size_t ThresholdEnsemble::members() const {
+  return thresholds.empty() ? drawn.seeds.size()
+                            : thresholds.size() / static_cast<std::size_t>(chain.beads);
+}
+
 std::vector<LaneEnd> ensemble_first_breaks(const ThresholdEnsemble& e,
                                            const std::atomic<bool>* stop, int workers) {
   assert(e.chain.beads >= 1 && !e.chain.pull_string);
-  const std::size_t members = e.thresholds.size() / static_cast<std::size_t>(e.chain.beads);
+  assert(!e.thresholds.empty() || weibull_draws_positive_finite(e.drawn.scale, e.drawn.shape));
+  const std::size_t members = e.members();
   const std::size_t parts = std::clamp<std::size_t>(
       std::min(static_cast<std::size_t>(std::max(workers, 1)), members / kEnsembleMembersPerWorker),
       1, std::max<std::size_t>(members, 1));

@@ -44,6 +44,15 @@ struct ThresholdEnsemble {
   // phi_c,j of member m, spring j (1..N), at index m N + j - 1 (ChainParams::threshold_of); the
   // caller's, read in place (a sweep's 10^4 seeds are 2.4 MB: a copy cost a tenth of the run).
   std::span<const double> thresholds;
+  // Or, where `thresholds` is empty, member m's drawn by seed: phi_c,j = scale x Weibull(shape)
+  // of u(seeds[m], j), draw_threshold_rows' bits (threshold_draw.h), each drawn only when a
+  // test needs it (the scale and shape must pass weibull_draws_positive_finite).
+  struct WeibullSeeds {
+    double scale = 1.0, shape = 1.0;
+    std::span<const std::uint64_t> seeds;
+  } drawn;
+
+  std::size_t members() const;
 };
 
 // Whether `a` and `b` differ at most in their thresholds, and an ensemble can run them: no pull

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 
 namespace cb::detail {
 
@@ -15,17 +16,30 @@ using SpringReaches = void (*)(const double* psi0, const double* vel0, const dou
                                double* top);
 SpringReaches spring_reaches_for_cpu();
 
+// level[j] for springs j + 1 = 1..n of a member drawn by seed: threshold_levels.h's drawn_level
+// of uniform_bits(stream, j + 1), several springs at once (the ensemble takes 3 x 10^5), where
+// key[j] = index_key(j + 1).
+using DrawnLevels = void (*)(std::uint64_t stream, const std::uint64_t* key, std::size_t n,
+                             std::int16_t* level);
+DrawnLevels drawn_levels_for_cpu();
+
 namespace sse2 {
 void spring_reaches(const double* psi0, const double* vel0, const double* psi1, const double* vel1,
                     std::size_t n, double slack, double* reach, double* top);
-}
+void drawn_levels(std::uint64_t stream, const std::uint64_t* key, std::size_t n,
+                  std::int16_t* level);
+}  // namespace sse2
 namespace avx2 {
 void spring_reaches(const double* psi0, const double* vel0, const double* psi1, const double* vel1,
                     std::size_t n, double slack, double* reach, double* top);
-}
+void drawn_levels(std::uint64_t stream, const std::uint64_t* key, std::size_t n,
+                  std::int16_t* level);
+}  // namespace avx2
 namespace avx512 {
 void spring_reaches(const double* psi0, const double* vel0, const double* psi1, const double* vel1,
                     std::size_t n, double slack, double* reach, double* top);
-}
+void drawn_levels(std::uint64_t stream, const std::uint64_t* key, std::size_t n,
+                  std::int16_t* level);
+}  // namespace avx512
 
 }  // namespace cb::detail

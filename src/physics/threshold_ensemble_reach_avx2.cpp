@@ -3,10 +3,12 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <limits>
 #include <type_traits>
 
 #include "physics/threshold_ensemble_reach.h"
+#include "physics/threshold_levels.h"
 
 // The target from here on, after the declarations: their callers are built for the baseline.
 #include "physics/target_avx2_begin.inc"

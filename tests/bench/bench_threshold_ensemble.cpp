@@ -137,6 +137,38 @@ void BM_EnsemblePaired2(benchmark::State& state) {
       last_seed(cb::ensemble_first_breaks(e)), beta);
 }
 
+// The ensemble handed the seeds 1..kSeeds instead of their thresholds (ThresholdEnsemble::drawn):
+// it draws a threshold only where a test needs it, so `ratio` is the whole of a sweep's work
+// after its scene, draws included (BM_EnsemblePaired + BM_DrawPaired's before).
+cb::ThresholdEnsemble drawn_ensemble_of(double beta, const std::vector<std::uint64_t>& seeds) {
+  cb::ThresholdEnsemble e = ensemble_of(beta);
+  e.thresholds = {};
+  e.drawn = {1.0, 6.0, seeds};
+  return e;
+}
+std::vector<std::uint64_t> all_seeds() {
+  std::vector<std::uint64_t> seeds(kSeeds);
+  for (int s = 1; s <= kSeeds; ++s)
+    seeds[static_cast<std::size_t>(s - 1)] = static_cast<std::uint64_t>(s);
+  return seeds;
+}
+void BM_EnsembleDrawnPaired(benchmark::State& state) {
+  const double beta = state.range(0) / 1000.0;
+  const std::vector<std::uint64_t> seeds = all_seeds();
+  const cb::ThresholdEnsemble e = drawn_ensemble_of(beta, seeds);
+  ratio_to_run(
+      state, [&] { benchmark::DoNotOptimize(cb::ensemble_first_breaks(e)); },
+      last_seed(cb::ensemble_first_breaks(e)), beta);
+}
+void BM_EnsembleDrawnPaired2(benchmark::State& state) {
+  const double beta = state.range(0) / 1000.0;
+  const std::vector<std::uint64_t> seeds = all_seeds();
+  const cb::ThresholdEnsemble e = drawn_ensemble_of(beta, seeds);
+  ratio_to_run(
+      state, [&] { benchmark::DoNotOptimize(cb::ensemble_first_breaks(e, nullptr, 2)); },
+      last_seed(cb::ensemble_first_breaks(e)), beta);
+}
+
 // A floor under any ensemble whose seeds keep `run`'s break times bit for bit: each seed's time
 // is `run`'s root of a Hermite cubic (crossing.h: hermite_root, then the bisection of
 // finish_hermite_roots, ~54 dependent steps, batched as the ensemble batches them), and those
@@ -215,6 +247,8 @@ BENCHMARK(BM_OneRunSeed1)->Apply(betas);
 BENCHMARK(BM_OneRunLastSeed)->Apply(betas);
 BENCHMARK(BM_EnsemblePaired)->Apply(betas)->UseManualTime();
 BENCHMARK(BM_EnsemblePaired2)->Apply(betas)->UseManualTime();
+BENCHMARK(BM_EnsembleDrawnPaired)->Apply(betas)->UseManualTime();
+BENCHMARK(BM_EnsembleDrawnPaired2)->Apply(betas)->UseManualTime();
 BENCHMARK(BM_RootsFloorPaired)->Apply(betas)->UseManualTime();
 BENCHMARK(BM_ReadFloorPaired)->Apply(betas)->UseManualTime();
 BENCHMARK(BM_DrawPaired)->Apply(betas)->UseManualTime();
