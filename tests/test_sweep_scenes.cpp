@@ -14,6 +14,7 @@
 #include "app/csv.h"
 #include "app/sweep_setup.h"
 #include "app/sweep_values.h"
+#include "physics/threshold_draw.h"
 #include "scene/scene_writer.h"
 #include "test_support.h"
 
@@ -182,6 +183,9 @@ TEST_CASE("a sweep's seed points and breaks on two threads are those of one", "[
     INFO(axes.front());
     cb::SweepOptions o;
     o.scene = std::string(CHAINBREAK_SCENES) + "/flawed_chain.toml";
+    // Normal thresholds: each seed's row drawn and checked before the runs (Weibull rows are
+    // drawn later, where needed: the next test).
+    o.overrides = {{"chain.threshold_dist", "normal"}, {"chain.threshold_shape", "0.1"}};
     o.axes = axes;
     const cb::Grid grid = cb::sweep_grid(o);
     o.jobs = 1;
@@ -215,6 +219,50 @@ TEST_CASE("a sweep's seed points and breaks on two threads are those of one", "[
     CHECK(broke == grid.size());
     CHECK(equal == grid.size());
   }
+}
+
+TEST_CASE("a sweep's Weibull seeds are drawn where needed, each as `run` draws it",
+          "[sweep][points][flaws]") {
+  // flawed_chain.toml's Weibull thresholds pass the checks whatever the seed
+  // (every_draw_passes): the points hold no rows; thresholds_of draws a point's seed as the
+  // scene reader does, and the ensemble draws what it needs (its breaks: the CSV test below and
+  // tests/test_threshold_ensemble.cpp). A normal draw, a hanging chain and a modulus whose
+  // least draw underflows are drawn and checked before the runs.
+  cb::SweepOptions o;
+  o.scene = std::string(CHAINBREAK_SCENES) + "/flawed_chain.toml";
+  o.axes = {"--values drive.beta=0.05,0.2", "--vary chain.seed=1:300:300"};
+  const cb::Grid grid = cb::sweep_grid(o);
+  const cb::SweepPoints points = cb::sweep_points(o, grid, {0, grid.size()});
+  std::size_t later = 0, same = 0;
+  std::vector<double> row(30);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    later += points.draws_later(i);
+    points.thresholds_of(i, row.data());
+    const cb::SceneDesc whole = points.scene_of(i);
+    same += row == whole.chain.thresholds &&
+            row == cb::draw_thresholds(cb::ThresholdDist::Weibull, 1.0, 6.0,
+                                       static_cast<std::uint64_t>(points.seed[i]), 30);
+  }
+  CHECK(later == points.size());
+  CHECK(same == points.size());
+  CHECK(points.thresholds_in_order({0, 1, 2}) == nullptr);
+  cb::SceneDesc scene = cb::load_scene(o.scene, {});
+  CHECK(cb::every_draw_passes(scene));
+  const cb::SceneDesc weibull = scene;
+  scene.threshold_draw->dist = "normal";
+  CHECK_FALSE(cb::every_draw_passes(scene));
+  scene = weibull;
+  scene.chain.gravity = 1e-4;
+  scene.chain.normalize();
+  CHECK_FALSE(cb::every_draw_passes(scene));
+  scene = weibull;
+  scene.threshold_draw->shape = 0.01;  // u = 2^-54: (2^-54)^100 underflows to zero
+  CHECK_FALSE(cb::every_draw_passes(scene));
+  // A seed the reader refuses is still named, drawn later or not.
+  o.axes = {"--values chain.seed=3,-1"};
+  const cb::Grid bad = cb::sweep_grid(o);
+  CHECK_THROWS_WITH(cb::sweep_points(o, bad, {0, bad.size()}),
+                    Catch::StartsWith("--values chain.seed=3,-1 (value -1): chain.seed"));
 }
 
 TEST_CASE("a value the scene's text refuses is named by the option that gave it",
@@ -275,7 +323,10 @@ TEST_CASE("a beta x seed grid's memory counts each seed's thresholds once", "[sw
   // a point (20 x as many).
   cb::SweepOptions o;
   o.scene = std::string(CHAINBREAK_SCENES) + "/flawed_chain.toml";
-  o.overrides = {{"chain.beads", "1000"}};
+  // Rows drawn before the runs: normal thresholds (every_draw_passes takes only Weibull ones).
+  o.overrides = {{"chain.beads", "1000"},
+                 {"chain.threshold_dist", "normal"},
+                 {"chain.threshold_shape", "0.1"}};
   o.axes = {"--vary drive.beta=0.01:0.2:20", "--vary chain.seed=1:500:500"};
   const cb::Grid grid = cb::sweep_grid(o);
   for (const cb::PointRange range : {cb::PointRange{0, grid.size()}, cb::PointRange{2600, 2900}}) {

@@ -34,18 +34,26 @@ struct SweepPoints {
   // Not value-initialised: each thread's first write faults its own pages in (1.5 us a page on
   // a VM; 10^4 seeds of 30 are 600 pages).
   std::unique_ptr<double[]> thresholds;
+  // Per scene: whether every seed passes the checks undrawn (every_draw_passes). Its points own
+  // no row: an ensemble draws what it needs of them (ThresholdEnsemble::drawn), thresholds_of
+  // and scene_of the rest. Empty: none.
+  std::vector<char> drawn_later;
   // Points of one group differ at most in their thresholds (threshold_groups); empty: no groups.
   std::vector<std::size_t> group;
 
   std::size_t size() const { return scene.size(); }
   bool owns_thresholds(std::size_t i) const { return seed[i] == seed[i]; }
+  // Point i's seed is drawn where it is needed, not in `thresholds`.
+  bool draws_later(std::size_t i) const {
+    return owns_thresholds(i) && !drawn_later.empty() && drawn_later[scene[i]] != 0;
+  }
   // Everything of point i's scene but its thresholds.
   const SceneDesc& shared(std::size_t i) const { return scenes[scene[i]]; }
   SceneDesc scene_of(std::size_t i) const;  // point i's whole scene
   // Point i's phi_c,j for j = 1..N into out[j - 1].
   void thresholds_of(std::size_t i, double* out) const;
   // Where the thresholds of `members` (points of one scene's N) lie one after another in
-  // `thresholds`, member k's at k N, or null.
+  // `thresholds`, member k's at k N, or null (also where they are drawn later).
   const double* thresholds_in_order(const std::vector<std::size_t>& members) const;
 };
 

@@ -43,9 +43,14 @@ std::vector<std::vector<std::size_t>> ensembles_of(const SweepPoints& points) {
   std::vector<double> row;
   for (std::size_t i = 0; i < points.size(); ++i) {
     const ChainParams& chain = points.shared(i).chain;
-    row.resize(static_cast<std::size_t>(chain.beads));
-    points.thresholds_of(i, row.data());
-    if (!ensemble_can_run(chain, row.data())) continue;
+    if (points.draws_later(i)) {
+      // Every draw of the scene is above zero and finite, as the scene's own (its first point's).
+      if (!ensemble_can_run(chain)) continue;
+    } else {
+      row.resize(static_cast<std::size_t>(chain.beads));
+      points.thresholds_of(i, row.data());
+      if (!ensemble_can_run(chain, row.data())) continue;
+    }
     if (!run_of_group || points.group[i] != points.group[run_of_group->back()])
       run_of_group = &by_group[points.group[i]];
     run_of_group->push_back(i);
@@ -94,11 +99,19 @@ void run_ensembles(const SweepPoints& points,
         }
         e.dt = first.integrator.dt;
         e.last_step = planned_steps(first);
-        // The members' thresholds in place where they lie in order (seeds along the last or
-        // only axis), else gathered.
+        // The members' seeds where the ensemble can draw them (one draw: every member's scene
+        // draws later and alike), else their thresholds in place where they lie in order (seeds
+        // along the last or only axis), else gathered.
         const auto n = static_cast<std::size_t>(first.chain.beads);
         std::vector<double> gathered;
-        if (const double* in_order = points.thresholds_in_order(members)) {
+        std::vector<std::uint64_t> seeds;
+        const bool drawn = std::all_of(members.begin(), members.end(), [&](std::size_t i) {
+          return points.draws_later(i) && draws_alike(points.shared(i), first);
+        });
+        if (drawn) {
+          for (const std::size_t i : members) seeds.push_back(*seed_of_value(points.seed[i]));
+          e.drawn = {first.threshold_draw->scale, first.threshold_draw->shape, seeds};
+        } else if (const double* in_order = points.thresholds_in_order(members)) {
           e.thresholds = {in_order, members.size() * n};
         } else {
           gathered.resize(members.size() * n);

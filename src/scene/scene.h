@@ -194,6 +194,12 @@ void draw_thresholds_into(const ThresholdDraw& draw, int beads, double* out);
 // sweep draws its seeds' rows this way before setting them (set_drawn_thresholds).
 void draw_threshold_rows_into(const ThresholdDraw& draw, int beads, const std::uint64_t* seeds,
                               std::size_t rows, double* out);
+// Whether every seed's thresholds pass validate_new_thresholds without being drawn: Weibull
+// draws, each above zero and finite whatever the seed (weibull_draws_positive_finite), on a chain
+// whose checks read each threshold alone (not hanging, linear springs), and the rows of the
+// least and the largest draw pass. A sweep's 10^4 seeds of such a scene are then not drawn, nor
+// checked, before they run: an ensemble draws what it needs (physics/threshold_ensemble.h).
+bool every_draw_passes(const SceneDesc& scene);
 // The seed the scene reader takes for chain.seed = value (a whole number from 0 to 9 x 10^15),
 // or none.
 std::optional<std::uint64_t> seed_of_value(double value);

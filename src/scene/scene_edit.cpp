@@ -157,6 +157,29 @@ bool set_drawn_thresholds(SceneDesc& scene, double seed, const double* row) {
                                 [&](double* out) { std::copy_n(row, scene.chain.beads, out); });
 }
 
+bool every_draw_passes(const SceneDesc& scene) {
+  if (!scene.threshold_draw || scene.threshold_draw->dist != "weibull") return false;
+  const ThresholdDraw& d = *scene.threshold_draw;
+  if (scene.chain.hanging() || scene.chain.anharmonic() ||
+      !weibull_draws_positive_finite(d.scale, d.shape))
+    return false;
+  // The quantile rises with u: every draw lies between these two, and the checks left
+  // (Checker::coefficients: finite and above zero) read each threshold alone.
+  for (const std::uint64_t bits : {std::uint64_t{0}, (std::uint64_t{1} << 53) - 1}) {
+    const double phi = weibull_threshold(d.scale, d.shape, uniform_of_bits(bits));
+    SceneDesc row = scene;
+    row.chain.thresholds.assign(static_cast<std::size_t>(row.chain.beads), phi);
+    row.chain.threshold = phi;
+    row.chain.normalize();
+    try {
+      validate_new_thresholds(row);
+    } catch (const SceneError&) {
+      return false;
+    }
+  }
+  return true;
+}
+
 bool draws_alike(const SceneDesc& a, const SceneDesc& b) {
   return a.threshold_draw && b.threshold_draw && a.chain.beads == b.chain.beads &&
          a.threshold_draw->dist == b.threshold_draw->dist &&
