@@ -230,8 +230,9 @@ TEST_CASE("a sweep's Weibull seeds are drawn where needed, each as `run` draws i
   // least draw underflows are drawn and checked before the runs.
   cb::SweepOptions o;
   o.scene = std::string(CHAINBREAK_SCENES) + "/flawed_chain.toml";
-  o.axes = {"--values drive.beta=0.05,0.2", "--vary chain.seed=1:300:300"};
+  o.axes = {"--values drive.beta=0.05,0.2", "--vary chain.seed=1:2048:2048"};
   const cb::Grid grid = cb::sweep_grid(o);
+  o.jobs = 2;
   const cb::SweepPoints points = cb::sweep_points(o, grid, {0, grid.size()});
   std::size_t later = 0, same = 0;
   std::vector<double> row(30);
@@ -246,6 +247,26 @@ TEST_CASE("a sweep's Weibull seeds are drawn where needed, each as `run` draws i
   CHECK(later == points.size());
   CHECK(same == points.size());
   CHECK(points.thresholds_in_order({0, 1, 2}) == nullptr);
+  // The ensembles draw their members' thresholds (two betas side by side on two threads, each
+  // beta's 2048 seeds in two parts on one): the same breaks as on one thread, and every 97th
+  // point's as it runs alone with its row drawn whole (scene_of). Run under ThreadSanitizer too.
+  const auto breaks_one = cb::sweep_first_breaks(points, cb::Solver::Rk4, 1, nullptr, {});
+  const auto breaks_two = cb::sweep_first_breaks(points, cb::Solver::Rk4, 2, nullptr, {});
+  std::size_t equal = 0, broke = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    broke += breaks_one[i].broke;
+    equal += breaks_one[i].broke == breaks_two[i].broke &&
+             breaks_one[i].spring == breaks_two[i].spring && breaks_one[i].tau == breaks_two[i].tau;
+  }
+  CHECK(broke == points.size());
+  CHECK(equal == points.size());
+  for (std::size_t i = 0; i < points.size(); i += 97) {
+    INFO("point " << i);
+    const cb::FirstBreak alone =
+        cb::sweep_first_break(points.scene_of(i), cb::Solver::Rk4, nullptr);
+    CHECK(alone.spring == breaks_one[i].spring);
+    CHECK(alone.tau == breaks_one[i].tau);
+  }
   cb::SceneDesc scene = cb::load_scene(o.scene, {});
   CHECK(cb::every_draw_passes(scene));
   const cb::SceneDesc weibull = scene;
