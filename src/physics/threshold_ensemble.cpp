@@ -342,8 +342,7 @@ class Ensemble {
 #if defined(__SSE2__)
     if (group_ == kGroup) {
       // level_of eight a register (the floats' bits shifted, packed with saturation: the clamp;
-      // a level above level_of's would miss crossings, tests/test_threshold_ensemble.cpp), then
-      // four groups' lowest at once (pairwise minima of the registers interleaved).
+      // a level above level_of's would miss crossings, tests/test_threshold_ensemble.cpp).
       const __m128i base = _mm_set1_epi32(base_);
       const auto four = [&](std::size_t j) {
         const auto two = [&](std::size_t i) {
@@ -355,13 +354,36 @@ class Ensemble {
         const __m128 f = _mm_movelh_ps(two(j), two(j + 2));
         return _mm_sub_epi32(_mm_srai_epi32(_mm_castps_si128(f), 12), base);
       };
+      for (std::size_t j = 0; j < words_ * kWord; j += 8)
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(level + j),
+                         _mm_max_epi16(_mm_packs_epi32(four(j), four(j + 4)), _mm_setzero_si128()));
+      lowest_of_groups(level, lowest);
+      return;
+    }
+#endif
+    for (std::size_t j = 0; j < n_; ++j) level[j] = level_of(row[j], base_);
+    for (std::size_t j = n_; j < words_ * kWord; ++j) level[j] = kTopLevel;  // above any reach's
+    lowest_of_groups(level, lowest);
+  }
+
+  // The same for a member drawn by seed, of its u.
+  void drawn_levels_of_member(std::uint64_t seed, Level* __restrict level,
+                              Level* __restrict lowest) const {
+    // Every word's levels drawn (a whole number of vectors), the padding's then set.
+    drawn_levels_(seed_stream(seed), keys_.data(), words_ * kWord, level);
+    for (std::size_t j = n_; j < words_ * kWord; ++j) level[j] = kTopLevel;
+    lowest_of_groups(level, lowest);
+  }
+
+  // Each group's lowest of a member's levels (words_ kWord, padded above any reach's).
+  void lowest_of_groups(const Level* __restrict level, Level* __restrict lowest) const {
+#if defined(__SSE2__)
+    if (group_ == kGroup) {
+      // Four groups of a word at once: pairwise minima of its registers interleaved.
       for (std::size_t w = 0; w < words_; ++w) {
         __m128i eight[4];
-        for (std::size_t q = 0; q < 4; ++q) {
-          const std::size_t j = w * kWord + 8 * q;
-          eight[q] = _mm_max_epi16(_mm_packs_epi32(four(j), four(j + 4)), _mm_setzero_si128());
-          _mm_storeu_si128(reinterpret_cast<__m128i*>(level + j), eight[q]);
-        }
+        for (std::size_t q = 0; q < 4; ++q)
+          eight[q] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(level + w * kWord + 8 * q));
         const __m128i ab = _mm_min_epi16(_mm_unpacklo_epi16(eight[0], eight[1]),
                                          _mm_unpackhi_epi16(eight[0], eight[1]));
         const __m128i cd = _mm_min_epi16(_mm_unpacklo_epi16(eight[2], eight[3]),
@@ -373,18 +395,6 @@ class Ensemble {
       return;
     }
 #endif
-    for (std::size_t j = 0; j < n_; ++j) level[j] = level_of(row[j], base_);
-    for (std::size_t j = n_; j < words_ * kWord; ++j) level[j] = kTopLevel;  // above any reach's
-    for (std::size_t g = 0; g < groups_; ++g)
-      lowest[g] = *std::min_element(level + g * group_, level + std::min(n_, g * group_ + group_));
-  }
-
-  // The same for a member drawn by seed, of its u.
-  void drawn_levels_of_member(std::uint64_t seed, Level* __restrict level,
-                              Level* __restrict lowest) const {
-    // Every word's levels drawn (a whole number of vectors), the padding's then set.
-    drawn_levels_(seed_stream(seed), keys_.data(), words_ * kWord, level);
-    for (std::size_t j = n_; j < words_ * kWord; ++j) level[j] = kTopLevel;
     for (std::size_t g = 0; g < groups_; ++g)
       lowest[g] = *std::min_element(level + g * group_, level + std::min(n_, g * group_ + group_));
   }
@@ -531,7 +541,7 @@ class Ensemble {
   std::vector<double> draw_u_;        // draw_near's u, then their draws ...
   std::vector<std::size_t> draw_at_;  // ... and where they go in rows_
   detail::DrawnLevels drawn_levels_;  // the widest this CPU runs
-  std::vector<std::uint64_t> keys_;    // index_key(j) at j - 1, for words_ kWord springs
+  std::vector<std::uint64_t> keys_;   // index_key(j) at j - 1, for words_ kWord springs
   std::vector<LaneEnd> ends_;         // Reached until settled
   // Each member's state: waiting to join the tests, open in them (open_), settled.
   enum : char { kWaiting, kOpen, kSettled };
