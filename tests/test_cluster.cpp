@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <nlohmann/json.hpp>
 
 #include "cluster/grid.h"
 #include "cluster/merge.h"
@@ -139,6 +140,19 @@ TEST_CASE("A record reads back as written", "[cluster]") {
   CHECK_THAT(record_mismatch(r, other), Catch::Contains("chain.gamma"));
   CHECK(record_path("/x/shard-0001-of-0002.csv") == "/x/shard-0001-of-0002.json");
   CHECK_THROWS(parse_record("{\"scene\": 1}"));
+  // Whole numbers are written as JSON integers (seeds: no shortest-digits search), the others,
+  // -0 and numbers past 2^53 as doubles; every value reads back as the same double.
+  ShardRecord seeds = r;
+  add_axis(seeds.grid, parse_values("chain.seed=1,20000,9007199254740992,-0,-3,2.5"));
+  const std::string text = record_json(seeds);
+  const auto written = nlohmann::json::parse(text)["grid"][2]["values"];
+  REQUIRE(written.size() == 6);
+  for (const std::size_t k : {0, 1, 4}) CHECK(written[k].is_number_integer());
+  for (const std::size_t k : {2, 3, 5}) CHECK(written[k].is_number_float());
+  const ShardRecord seeds_back = parse_record(text);
+  REQUIRE(seeds_back.grid.axes.size() == 3);
+  CHECK(seeds_back.grid.axes[2].values == seeds.grid.axes[2].values);
+  CHECK(std::signbit(seeds_back.grid.axes[2].values[3]));
 }
 
 TEST_CASE("A record is held to the sweep's limits before merge sizes anything by it",
