@@ -201,9 +201,10 @@ class Ensemble {
         weibull_(e.drawn),
         seeds_(drawn_ ? e.drawn.seeds.data() + first : nullptr),
         phi_(drawn_ ? nullptr : e.thresholds.data() + first * n_),
-        // Drawn rows: not value-initialised, each value written when drawn (has_).
-        rows_(drawn_ ? new double[count * n_] : nullptr),
+        // Not value-initialised: each slot written when drawn (has_).
+        slots_(drawn_ ? new double[count * kSlots] : nullptr),
         has_(drawn_ ? count * words_ : 0, 0),
+        spill_(drawn_ ? count : 0, kNoSpill),
         drawn_levels_(detail::drawn_levels_for_cpu()),
         keys_(drawn_ ? words_ * kWord : 0),
         ends_(count),
@@ -399,9 +400,19 @@ class Ensemble {
       lowest[g] = *std::min_element(level + g * group_, level + std::min(n_, g * group_ + group_));
   }
 
-  // Member m's thresholds: the caller's, or those drawn by seed so far (draw_near).
-  const double* row_of(int m) const {
-    return (drawn_ ? rows_.get() : phi_) + static_cast<std::size_t>(m) * n_;
+  // Member m's phi_c,j (spring j + 1): the caller's, or, drawn by seed, its slot (its drawn
+  // thresholds in order of spring) or its spilled row.
+  double threshold(std::size_t m, std::size_t j) const {
+    if (!drawn_) return phi_[m * n_ + j];
+    if (spill_[m] != kNoSpill) return spilled_[spill_[m] * n_ + j];
+    // Its rank among the member's drawn springs.
+    const std::uint32_t* has = has_.data() + m * words_;
+    std::size_t rank = 0;
+    for (std::size_t w = 0; w < j / kWord; ++w)
+      rank += static_cast<std::size_t>(std::popcount(has[w]));
+    rank += static_cast<std::size_t>(
+        std::popcount(has[j / kWord] & ((std::uint32_t{1} << (j % kWord)) - 1)));
+    return slots_[m * kSlots + rank];
   }
 
   // Drawn by seed: the thresholds the near members' levels flag (near_springs_) and that are not
@@ -409,30 +420,76 @@ class Ensemble {
   // ones settle() reads. About one a member at beta = 0.02: of 3 x 10^5, ~10^4 are drawn.
   void draw_near() {
     draw_u_.clear();
-    draw_at_.clear();
+    draw_new_.assign(near_.size() * words_, 0);
     for (std::size_t k = 0; k < near_.size(); ++k) {
       const auto m = static_cast<std::size_t>(near_[k]);
-      std::uint32_t* has = has_.data() + m * words_;
+      const std::uint32_t* has = has_.data() + m * words_;
       std::uint64_t stream = 0;
       bool streamed = false;
       for (std::size_t w = 0; w < words_; ++w) {
-        for (std::uint32_t left = near_springs_[k * words_ + w] & ~has[w]; left != 0;
-             left &= left - 1) {
+        const std::uint32_t added = near_springs_[k * words_ + w] & ~has[w];
+        draw_new_[k * words_ + w] = added;
+        for (std::uint32_t left = added; left != 0; left &= left - 1) {
           const std::size_t j = w * kWord + static_cast<std::size_t>(std::countr_zero(left));
           if (!streamed) {
             stream = seed_stream(seeds_[m]);
             streamed = true;
           }
           draw_u_.push_back(uniform_of_bits(uniform_bits(stream, j + 1)));
-          draw_at_.push_back(m * n_ + j);
         }
-        has[w] |= near_springs_[k * words_ + w];
       }
     }
     // weibull_threshold's bits: the quantile, then the scale.
     weibull_quantiles(draw_u_.data(), draw_u_.size(), weibull_.shape, draw_u_.data());
-    for (std::size_t i = 0; i < draw_u_.size(); ++i)
-      rows_[draw_at_[i]] = draw_u_[i] * weibull_.scale;
+    for (double& x : draw_u_) x *= weibull_.scale;
+    const double* value = draw_u_.data();
+    for (std::size_t k = 0; k < near_.size(); ++k)
+      value = keep_drawn(static_cast<std::size_t>(near_[k]), draw_new_.data() + k * words_, value);
+  }
+
+  // Member m's new draws (springs `added`, words_ words; their quantiles from `value` on, in
+  // order of spring) kept: in its slots while they hold all its draws (a member draws ~1 at
+  // beta = 0.02: a row of N each, 1.2 MB for 5 000 members, cost a sweep ~600 first-touch page
+  // faults), else in a row of its own. Returns the value after its last.
+  const double* keep_drawn(std::size_t m, const std::uint32_t* added, const double* value) {
+    std::uint32_t* has = has_.data() + m * words_;
+    std::size_t held = 0, adding = 0;
+    for (std::size_t w = 0; w < words_; ++w) {
+      held += static_cast<std::size_t>(std::popcount(has[w]));
+      adding += static_cast<std::size_t>(std::popcount(added[w]));
+    }
+    if (adding == 0) return value;
+    if (spill_[m] == kNoSpill && held + adding > kSlots) {
+      // Its slots move into a row of its own.
+      spill_[m] = static_cast<std::uint32_t>(spilled_.size() / n_);
+      spilled_.resize(spilled_.size() + n_);
+      std::size_t slot = 0;
+      for (std::size_t w = 0; w < words_; ++w)
+        for (std::uint32_t left = has[w]; left != 0; left &= left - 1)
+          spilled_[spill_[m] * n_ + w * kWord + static_cast<std::size_t>(std::countr_zero(left))] =
+              slots_[m * kSlots + slot++];
+    }
+    if (spill_[m] != kNoSpill) {
+      for (std::size_t w = 0; w < words_; ++w) {
+        for (std::uint32_t left = added[w]; left != 0; left &= left - 1)
+          spilled_[spill_[m] * n_ + w * kWord + static_cast<std::size_t>(std::countr_zero(left))] =
+              *value++;
+        has[w] |= added[w];
+      }
+      return value;
+    }
+    // Old and new merged in order of spring.
+    double merged[kSlots];
+    std::size_t out = 0, old = 0;
+    for (std::size_t w = 0; w < words_; ++w) {
+      for (std::uint32_t left = has[w] | added[w]; left != 0; left &= left - 1) {
+        const std::uint32_t bit = left & (~left + 1);
+        merged[out++] = (added[w] & bit) != 0 ? *value++ : slots_[m * kSlots + old++];
+      }
+      has[w] |= added[w];
+    }
+    std::copy_n(merged, out, slots_.get() + m * kSlots);
+    return value;
   }
 
   // The first of the window's intervals [0, n) (from `from` on) whose reach of spring j + 1 is
@@ -453,7 +510,13 @@ class Ensemble {
   // Member m's thresholds into the cache a few members ahead (each row its own lines; the
   // list's gaps defeat the hardware's stride prefetch).
   void prefetch_row(int m) const {
-    const double* row = row_of(m);
+    const auto member = static_cast<std::size_t>(m);
+    if (drawn_) {
+      __builtin_prefetch(slots_.get() + member * kSlots);
+      __builtin_prefetch(has_.data() + member * words_);
+      return;
+    }
+    const double* row = phi_ + member * n_;
     for (std::size_t b = 0; b < n_ * sizeof(double); b += 64) __builtin_prefetch(row + b / 8);
     __builtin_prefetch(row + n_ - 1);
   }
@@ -465,7 +528,7 @@ class Ensemble {
   // its crossing times are bisected later with many other members' (finish), a group of lanes
   // at a time. The same roots and the same earliest rule, so the same spring and tau.
   bool settle(int m, const std::uint32_t* springs, std::int64_t from, std::size_t count) {
-    const double* __restrict row = row_of(m);
+    const auto member = static_cast<std::size_t>(m);
     // Of the springs its levels say may be near (bit j of word w: spring 32 w + j + 1), those
     // whose largest reach gets to the member's bound, and the first interval where one's reach
     // does: each spring's first searched only below the earliest found so far (a jerk's window
@@ -475,9 +538,10 @@ class Ensemble {
     for (std::size_t w = 0; w < words_; ++w)
       for (std::uint32_t left = springs[w]; left != 0; left &= left - 1) {
         const std::size_t j = w * kWord + static_cast<std::size_t>(std::countr_zero(left));
-        if (!(row[j] <= top_[j])) continue;
-        near_here_.push_back(j);
-        if (k > 0) k = first_reaching(j, from, k, row[j]);
+        const double phi = threshold(member, j);
+        if (!(phi <= top_[j])) continue;
+        near_here_.push_back({j, phi});
+        if (k > 0) k = first_reaching(j, from, k, phi);
       }
     for (; k < count; ++k) {
       const std::int64_t i = from + static_cast<std::int64_t>(k);
@@ -485,9 +549,9 @@ class Ensemble {
       const IntervalRing::Meta& t = ring_.meta(i);
       const double h = t.tb - t.ta;
       const std::size_t first_root = roots_.size();
-      for (const std::size_t j : near_here_) {
-        if (!(row[j] <= reach[j])) continue;
-        const double upper = row[j], lower = lower_bound_of(upper, stretch_);
+      for (const auto [j, phi] : near_here_) {
+        if (!(phi <= reach[j])) continue;
+        const double upper = phi, lower = lower_bound_of(upper, stretch_);
         const SpringEnds s = spring_ends(ring_.ends(i), j);
         if (!detail::may_cross_between(s.p0, s.p1, s.m0, s.m1, detail::hermite_slack(h), upper,
                                        lower))
@@ -529,20 +593,24 @@ class Ensemble {
   bool stretch_;
   const IntervalRing& ring_;
   std::size_t length_;  // the ring's
-  // Member m's phi_c,j at m N + j - 1: the caller's (phi_), or drawn by seed (drawn_: seeds_[m]
-  // with weibull_'s scale and shape) into rows_ where bit j - 1 of its has_ (words_ a member) is
-  // set.
+  // Member m's phi_c,j: the caller's (phi_, at m N + j - 1), or drawn by seed (drawn_: seeds_[m]
+  // with weibull_'s scale and shape) where bit j - 1 of its has_ (words_ a member) is set, kept
+  // as threshold() reads them.
   bool drawn_;
   ThresholdEnsemble::WeibullSeeds weibull_;
   const std::uint64_t* seeds_;
   const double* phi_;
-  std::unique_ptr<double[]> rows_;
+  static constexpr std::size_t kSlots = 4;
+  static constexpr std::uint32_t kNoSpill = ~std::uint32_t{0};
+  std::unique_ptr<double[]> slots_;  // member m's drawn, in order of spring, at m kSlots
   std::vector<std::uint32_t> has_;
-  std::vector<double> draw_u_;        // draw_near's u, then their draws ...
-  std::vector<std::size_t> draw_at_;  // ... and where they go in rows_
-  detail::DrawnLevels drawn_levels_;  // the widest this CPU runs
-  std::vector<std::uint64_t> keys_;   // index_key(j) at j - 1, for words_ kWord springs
-  std::vector<LaneEnd> ends_;         // Reached until settled
+  std::vector<std::uint32_t> spill_;     // its row in spilled_ (at spill_[m] N), or kNoSpill
+  std::vector<double> spilled_;          // rows of members with more than kSlots drawn
+  std::vector<std::uint32_t> draw_new_;  // draw_near's springs drawn now, words_ a near member
+  std::vector<double> draw_u_;           // draw_near's u, then their draws
+  detail::DrawnLevels drawn_levels_;     // the widest this CPU runs
+  std::vector<std::uint64_t> keys_;      // index_key(j) at j - 1, for words_ kWord springs
+  std::vector<LaneEnd> ends_;            // Reached until settled
   // Each member's state: waiting to join the tests, open in them (open_), settled.
   enum : char { kWaiting, kOpen, kSettled };
   std::vector<char> joined_;
@@ -554,8 +622,12 @@ class Ensemble {
   std::vector<int> open_;
   std::vector<int> near_;                    // take()'s open members near a bound ...
   std::vector<std::uint32_t> near_springs_;  // ... and their springs' bits, words_ a member
-  std::vector<std::size_t> near_here_;       // settle()'s springs (j - 1)
-  std::int64_t taken_ = 0;                   // the intervals before this one are taken
+  struct NearSpring {
+    std::size_t j;  // spring j + 1
+    double phi;     // its threshold
+  };
+  std::vector<NearSpring> near_here_;  // settle()'s springs
+  std::int64_t taken_ = 0;             // the intervals before this one are taken
   // Of the intervals taken last: spring j's reach in interval i at slot(i) N + j - 1, its
   // largest up to the k-th of them for every 16th k at (j - 1) length_ / 16 + k / 16 (coarse_),
   // and its largest over all of them at j - 1.
