@@ -120,75 +120,104 @@ TEST_CASE("a slow pull's members break one after another, and no member is misse
   CHECK(check_members(members.front(), members, drive, 0.01, std::llround(700.0 / 0.01)) == 300);
 }
 
+namespace {
+
+// The ensemble of `seeds` drawn by seed (ThresholdEnsemble::drawn: each threshold drawn only
+// where a test needs it, the members ordered and filtered by the levels of their u,
+// threshold_levels.h) against the same ensemble handed every drawn threshold (itself
+// Integrator's alone: the tests above), member by member, bit for bit, on one and two threads;
+// and its first three members against Integrator alone.
+void check_drawn(int beads, double shape, const cb::DriveDesc& drive, std::int64_t last_step,
+                 cb::BreakMode mode, int count) {
+  constexpr double kScale = 0.8;
+  std::vector<std::uint64_t> seeds;
+  std::vector<double> phi;
+  const auto n = static_cast<std::size_t>(beads);
+  for (int k = 0; k < count; ++k) {
+    seeds.push_back(1000003u * static_cast<std::uint64_t>(k) + 7u);
+    const std::vector<double> row =
+        cb::draw_thresholds(cb::ThresholdDist::Weibull, kScale, shape, seeds.back(), beads);
+    phi.insert(phi.end(), row.begin(), row.end());
+  }
+  cb::ThresholdEnsemble e;
+  e.chain = flawed(1, shape, mode, beads);
+  e.chain.gamma = 0.05;
+  e.forcing = cb::make_forcing(drive);
+  e.dt = 0.01;
+  e.last_step = last_step;
+  e.thresholds = phi;
+  const std::vector<cb::LaneEnd> given = cb::ensemble_first_breaks(e);
+  cb::ThresholdEnsemble d = e;
+  d.thresholds = {};
+  d.drawn = {kScale, shape, seeds};
+  REQUIRE(d.members() == static_cast<std::size_t>(count));
+  const auto same_ends = [&](const std::vector<cb::LaneEnd>& ends) {
+    REQUIRE(ends.size() == given.size());
+    std::size_t same = 0;
+    for (std::size_t m = 0; m < given.size(); ++m)
+      same += ends[m].kind == given[m].kind && ends[m].first.spring == given[m].first.spring &&
+              std::memcmp(&ends[m].first.tau, &given[m].first.tau, sizeof(double)) == 0 &&
+              ends[m].first.step == given[m].first.step;
+    return same;
+  };
+  const std::vector<cb::LaneEnd> drawn = cb::ensemble_first_breaks(d);
+  CHECK(same_ends(drawn) == given.size());
+  // Fewer slots in place: members move their draws to a row of their own (0: at their first),
+  // some of them while others stay.
+  for (const std::size_t slots : {2, 1, 0}) {
+    INFO("slots " << slots);
+    cb::ThresholdEnsemble few = d;
+    few.drawn.slots = slots;
+    CHECK(same_ends(cb::ensemble_first_breaks(few)) == given.size());
+  }
+  CHECK(std::count_if(given.begin(), given.end(), [](const cb::LaneEnd& end) {
+          return end.kind == cb::LaneEnd::Kind::Broke;
+        }) > count / 2);
+  // Two parts (threads) draw their own members.
+  CHECK(same_ends(cb::ensemble_first_breaks(d, nullptr, 2)) == given.size());
+  for (std::size_t m = 0; m < 3; ++m) {
+    cb::ChainParams p = e.chain;
+    p.thresholds.assign(phi.begin() + static_cast<std::ptrdiff_t>(n * m),
+                        phi.begin() + static_cast<std::ptrdiff_t>(n * m + n));
+    p.threshold = *std::min_element(p.thresholds.begin(), p.thresholds.end());
+    p.normalize();
+    const cb::LaneEnd a = alone(p, drive, 0.01, last_step);
+    CHECK(drawn[m].kind == a.kind);
+    CHECK(drawn[m].first.spring == a.first.spring);
+    CHECK(drawn[m].first.tau == a.first.tau);
+  }
+}
+
+}  // namespace
+
 TEST_CASE("an ensemble that draws its seeds' thresholds itself gives the same bits",
           "[ensemble][flaws]") {
-  // ThresholdEnsemble::drawn: the members' thresholds drawn by seed, each only where a test needs
-  // it, the members ordered and filtered by the levels of their u (threshold_levels.h), not of
-  // their thresholds. Against the same ensemble handed every drawn threshold (itself Integrator's
-  // alone: the tests above), member by member, bit for bit; and a few seeds against Integrator.
-  // A slow pull, the scene's, a fast one and a jerk; moduli 1.5 (spread: low u far below the
-  // float levels' resolution) and 6.
+  // 30 beads: a slow pull, the scene's, a fast one and a jerk; moduli 1.5 (spread: low u far
+  // below the float levels' resolution) and 6.
   for (const double shape : {1.5, 6.0})
     for (const double beta : {0.002, 0.02, 0.1, 1.0})
       for (const auto mode : {cb::BreakMode::Abs, cb::BreakMode::Stretch}) {
         INFO("shape " << shape << " beta " << beta << " stretch "
                       << (mode == cb::BreakMode::Stretch));
-        constexpr int kSeeds = 1500;
-        constexpr double kScale = 0.8;
-        std::vector<std::uint64_t> seeds;
-        std::vector<double> phi;
-        for (int k = 0; k < kSeeds; ++k) {
-          seeds.push_back(1000003u * static_cast<std::uint64_t>(k) + 7u);
-          const std::vector<double> row =
-              cb::draw_thresholds(cb::ThresholdDist::Weibull, kScale, shape, seeds.back(), 30);
-          phi.insert(phi.end(), row.begin(), row.end());
-        }
-        cb::ThresholdEnsemble e;
-        e.chain = flawed(1, shape, mode);
-        e.chain.gamma = 0.05;
         cb::DriveDesc drive;
         drive.type = cb::DriveType::Ramp;
         drive.beta = beta;
-        e.forcing = cb::make_forcing(drive);
-        e.dt = 0.01;
-        e.last_step = std::llround((6.0 / beta) / 0.01);
-        e.thresholds = phi;
-        const std::vector<cb::LaneEnd> given = cb::ensemble_first_breaks(e);
-        cb::ThresholdEnsemble d = e;
-        d.thresholds = {};
-        d.drawn = {kScale, shape, seeds};
-        REQUIRE(d.members() == static_cast<std::size_t>(kSeeds));
-        const std::vector<cb::LaneEnd> drawn = cb::ensemble_first_breaks(d);
-        REQUIRE(drawn.size() == given.size());
-        std::size_t same = 0, broke = 0;
-        for (std::size_t m = 0; m < given.size(); ++m) {
-          broke += given[m].kind == cb::LaneEnd::Kind::Broke;
-          same += drawn[m].kind == given[m].kind &&
-                  drawn[m].first.spring == given[m].first.spring &&
-                  std::memcmp(&drawn[m].first.tau, &given[m].first.tau, sizeof(double)) == 0 &&
-                  drawn[m].first.step == given[m].first.step;
-        }
-        CHECK(same == given.size());
-        CHECK(broke == given.size());
-        // Two parts (threads) draw their own members.
-        const std::vector<cb::LaneEnd> two = cb::ensemble_first_breaks(d, nullptr, 2);
-        std::size_t same_two = 0;
-        for (std::size_t m = 0; m < given.size(); ++m)
-          same_two += two[m].kind == given[m].kind &&
-                      two[m].first.spring == given[m].first.spring &&
-                      two[m].first.tau == given[m].first.tau;
-        CHECK(same_two == given.size());
-        for (std::size_t m = 0; m < 3; ++m) {
-          cb::ChainParams p = e.chain;
-          p.thresholds.assign(phi.begin() + static_cast<std::ptrdiff_t>(30 * m),
-                              phi.begin() + static_cast<std::ptrdiff_t>(30 * m + 30));
-          p.threshold = *std::min_element(p.thresholds.begin(), p.thresholds.end());
-          p.normalize();
-          const cb::LaneEnd a = alone(p, drive, 0.01, e.last_step);
-          CHECK(drawn[m].first.spring == a.first.spring);
-          CHECK(drawn[m].first.tau == a.first.tau);
-        }
+        check_drawn(30, shape, drive, std::llround((6.0 / beta) / 0.01), mode, 1500);
       }
+  // More springs than a word of levels (32: a member's drawn springs ranked across words), a
+  // ramp and kicks (whose intervals may not join).
+  for (const int beads : {40, 300}) {
+    INFO("beads " << beads);
+    cb::DriveDesc kicks;
+    kicks.type = cb::DriveType::Impulses;
+    for (int k = 0; k < 12; ++k) kicks.times.push_back(0.4137 + 0.77 * k);
+    kicks.strengths.assign(kicks.times.size(), 60.0);
+    check_drawn(beads, 1.5, kicks, std::llround(20.0 / 0.01), cb::BreakMode::Abs, 600);
+    cb::DriveDesc ramp;
+    ramp.type = cb::DriveType::Ramp;
+    ramp.beta = 0.02;
+    check_drawn(beads, 6.0, ramp, std::llround(300.0 / 0.01), cb::BreakMode::Abs, 600);
+  }
 }
 
 TEST_CASE("a drawn threshold's level is at or below the level of any reach at or above it",

@@ -202,7 +202,8 @@ class Ensemble {
         seeds_(drawn_ ? e.drawn.seeds.data() + first : nullptr),
         phi_(drawn_ ? nullptr : e.thresholds.data() + first * n_),
         // Not value-initialised: each slot written when drawn (has_).
-        slots_(drawn_ ? new double[count * kSlots] : nullptr),
+        slots_per_member_(std::min<std::size_t>(e.drawn.slots, kMaxSlots)),
+        slots_(drawn_ ? new double[count * slots_per_member_ + 1] : nullptr),
         has_(drawn_ ? count * words_ : 0, 0),
         spill_(drawn_ ? count : 0, kNoSpill),
         drawn_levels_(detail::drawn_levels_for_cpu()),
@@ -412,7 +413,7 @@ class Ensemble {
       rank += static_cast<std::size_t>(std::popcount(has[w]));
     rank += static_cast<std::size_t>(
         std::popcount(has[j / kWord] & ((std::uint32_t{1} << (j % kWord)) - 1)));
-    return slots_[m * kSlots + rank];
+    return slots_[m * slots_per_member_ + rank];
   }
 
   // Drawn by seed: the thresholds the near members' levels flag (near_springs_) and that are not
@@ -448,9 +449,9 @@ class Ensemble {
   }
 
   // Member m's new draws (springs `added`, words_ words; their quantiles from `value` on, in
-  // order of spring) kept: in its slots while they hold all its draws (a member draws ~1 at
-  // beta = 0.02: a row of N each, 1.2 MB for 5 000 members, cost a sweep ~600 first-touch page
-  // faults), else in a row of its own. Returns the value after its last.
+  // order of spring) kept: in its slots while they hold all its draws (WeibullSeeds::slots) (a
+  // member draws ~1 at beta = 0.02: a row of N each, 1.2 MB for 5 000 members, cost a sweep ~600
+  // first-touch page faults), else in a row of its own. Returns the value after its last.
   const double* keep_drawn(std::size_t m, const std::uint32_t* added, const double* value) {
     std::uint32_t* has = has_.data() + m * words_;
     std::size_t held = 0, adding = 0;
@@ -459,7 +460,7 @@ class Ensemble {
       adding += static_cast<std::size_t>(std::popcount(added[w]));
     }
     if (adding == 0) return value;
-    if (spill_[m] == kNoSpill && held + adding > kSlots) {
+    if (spill_[m] == kNoSpill && held + adding > slots_per_member_) {
       // Its slots move into a row of its own.
       spill_[m] = static_cast<std::uint32_t>(spilled_.size() / n_);
       spilled_.resize(spilled_.size() + n_);
@@ -467,7 +468,7 @@ class Ensemble {
       for (std::size_t w = 0; w < words_; ++w)
         for (std::uint32_t left = has[w]; left != 0; left &= left - 1)
           spilled_[spill_[m] * n_ + w * kWord + static_cast<std::size_t>(std::countr_zero(left))] =
-              slots_[m * kSlots + slot++];
+              slots_[m * slots_per_member_ + slot++];
     }
     if (spill_[m] != kNoSpill) {
       for (std::size_t w = 0; w < words_; ++w) {
@@ -479,16 +480,16 @@ class Ensemble {
       return value;
     }
     // Old and new merged in order of spring.
-    double merged[kSlots];
+    double merged[kMaxSlots];
     std::size_t out = 0, old = 0;
     for (std::size_t w = 0; w < words_; ++w) {
       for (std::uint32_t left = has[w] | added[w]; left != 0; left &= left - 1) {
         const std::uint32_t bit = left & (~left + 1);
-        merged[out++] = (added[w] & bit) != 0 ? *value++ : slots_[m * kSlots + old++];
+        merged[out++] = (added[w] & bit) != 0 ? *value++ : slots_[m * slots_per_member_ + old++];
       }
       has[w] |= added[w];
     }
-    std::copy_n(merged, out, slots_.get() + m * kSlots);
+    std::copy_n(merged, out, slots_.get() + m * slots_per_member_);
     return value;
   }
 
@@ -512,7 +513,7 @@ class Ensemble {
   void prefetch_row(int m) const {
     const auto member = static_cast<std::size_t>(m);
     if (drawn_) {
-      __builtin_prefetch(slots_.get() + member * kSlots);
+      __builtin_prefetch(slots_.get() + member * slots_per_member_);
       __builtin_prefetch(has_.data() + member * words_);
       return;
     }
@@ -600,12 +601,13 @@ class Ensemble {
   ThresholdEnsemble::WeibullSeeds weibull_;
   const std::uint64_t* seeds_;
   const double* phi_;
-  static constexpr std::size_t kSlots = 4;
+  static constexpr std::size_t kMaxSlots = 8;
   static constexpr std::uint32_t kNoSpill = ~std::uint32_t{0};
-  std::unique_ptr<double[]> slots_;  // member m's drawn, in order of spring, at m kSlots
+  std::size_t slots_per_member_;     // WeibullSeeds::slots
+  std::unique_ptr<double[]> slots_;  // member m's drawn, in order of spring, at m slots
   std::vector<std::uint32_t> has_;
   std::vector<std::uint32_t> spill_;     // its row in spilled_ (at spill_[m] N), or kNoSpill
-  std::vector<double> spilled_;          // rows of members with more than kSlots drawn
+  std::vector<double> spilled_;          // rows of members with more drawn than slots
   std::vector<std::uint32_t> draw_new_;  // draw_near's springs drawn now, words_ a near member
   std::vector<double> draw_u_;           // draw_near's u, then their draws
   detail::DrawnLevels drawn_levels_;     // the widest this CPU runs

@@ -50,6 +50,9 @@ struct ThresholdEnsemble {
   struct WeibullSeeds {
     double scale = 1.0, shape = 1.0;
     std::span<const std::uint64_t> seeds;
+    // How many drawn thresholds a member keeps in place (at most 8) before it moves them to a
+    // row of N of its own: ~1 is drawn a member at beta = 0.02 (tests set fewer, to move more).
+    std::size_t slots = 4;
   } drawn;
 
   std::size_t members() const;
