@@ -18,10 +18,15 @@
 // it, per group). A window so costs its near members, not all 10^4. A window is open() / 4
 // intervals, so the passes cost a fraction of the run and the run ends within a few steps of the
 // last member's break. A member settles as soon as it is known to cross; its crossing time is
-// bisected later with 255 others (crossing.h, finish_hermite_roots: 64 at a time on AVX-512). 10^4
-// seeds of a 30-bead chain cost ~1.2 x one run for a slow pull, 3.3 x at beta = 0.02 and ~55 x for
-// a jerk on one thread; 1.2-1.6, 2.5 and 23 x on two (each seed's own bit-exact crossing time;
-// tests/bench/README.md, sessions 31, 32 and 36).
+// bisected later with 255 others (crossing.h, finish_hermite_roots: 64 at a time on AVX-512).
+// Members drawn by seed (`drawn`: a sweep's Weibull seeds) are not drawn beforehand: their levels
+// are those of their u (threshold_levels.h: the hash's top bits, monotone in the draw), and a
+// threshold is drawn only when a member's level flags its spring as near, ~1 of a member's 30 at
+// beta = 0.02, in lanes, kept in a few slots a member. 10^4 seeds of a 30-bead chain, drawn so,
+// draws included, cost 1.26 x one run for a slow pull (beta = 0.001), 4.1 x at beta = 0.02 and
+// 71 x for a jerk on one thread; 1.2, 2.8 and 32 x on two (each seed's own bit-exact crossing
+// time; handed the drawn thresholds instead: 1.18, 3.4 and 61 x, the draws' 2.8 x at beta =
+// 0.02 not counted; tests/bench/README.md, sessions 31, 32, 36 and 37).
 #pragma once
 
 #include <atomic>

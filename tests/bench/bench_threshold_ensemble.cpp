@@ -2,7 +2,9 @@
 // RK4 run (physics/threshold_ensemble.h) in under 2 x the time of one run of that chain. The
 // ensemble runs until its last member breaks, so "one run" is measured twice: seed 1 alone
 // (to its first break, as `run` stops a sweep's value) and the seed that breaks last alone (the
-// same span of steps as the ensemble). Thresholds are drawn beforehand (not timed).
+// same span of steps as the ensemble). Thresholds are drawn beforehand (not timed), except for
+// the Drawn benchmarks, whose ensembles are handed the seeds and draw what they need (a sweep's
+// way since session 37: the whole of its work after the scene).
 // The paired benchmarks (bench_support.h) time the ensemble and that seed's run in the same
 // iteration, and a floor under any ensemble that keeps `run`'s crossing times: one root a seed.
 #include <benchmark/benchmark.h>
