@@ -53,6 +53,23 @@ void check_points(const cb::SweepOptions& o) {
   }
 }
 
+// The first breaks of `one`'s points on one thread and of `two`'s on two: every point broke,
+// the same spring and tau on both. Returns the first.
+std::vector<cb::FirstBreak> breaks_on_one_and_two(const cb::SweepPoints& one,
+                                                  const cb::SweepPoints& two) {
+  const auto breaks_one = cb::sweep_first_breaks(one, cb::Solver::Rk4, 1, nullptr, {});
+  const auto breaks_two = cb::sweep_first_breaks(two, cb::Solver::Rk4, 2, nullptr, {});
+  std::size_t equal = 0, broke = 0;
+  for (std::size_t i = 0; i < one.size(); ++i) {
+    broke += breaks_one[i].broke;
+    equal += breaks_one[i].broke == breaks_two[i].broke &&
+             breaks_one[i].spring == breaks_two[i].spring && breaks_one[i].tau == breaks_two[i].tau;
+  }
+  CHECK(broke == one.size());
+  CHECK(equal == one.size());
+  return breaks_one;
+}
+
 }  // namespace
 
 TEST_CASE("sweep point scenes equal parsing the file with the values as overrides",
@@ -207,17 +224,7 @@ TEST_CASE("a sweep's seed points and breaks on two threads are those of one", "[
     std::vector<std::size_t> rows(two.own);
     std::sort(rows.begin(), rows.end());
     CHECK(std::unique(rows.begin(), rows.end()) - rows.begin() == 2048);
-    const auto breaks_one = cb::sweep_first_breaks(one, cb::Solver::Rk4, 1, nullptr, {});
-    const auto breaks_two = cb::sweep_first_breaks(two, cb::Solver::Rk4, 2, nullptr, {});
-    std::size_t equal = 0, broke = 0;
-    for (std::size_t i = 0; i < grid.size(); ++i) {
-      broke += breaks_one[i].broke;
-      equal += breaks_one[i].broke == breaks_two[i].broke &&
-               breaks_one[i].spring == breaks_two[i].spring &&
-               breaks_one[i].tau == breaks_two[i].tau;
-    }
-    CHECK(broke == grid.size());
-    CHECK(equal == grid.size());
+    breaks_on_one_and_two(one, two);
   }
 }
 
@@ -250,16 +257,7 @@ TEST_CASE("a sweep's Weibull seeds are drawn where needed, each as `run` draws i
   // The ensembles draw their members' thresholds (two betas side by side on two threads, each
   // beta's 2048 seeds in two parts on one): the same breaks as on one thread, and every 97th
   // point's as it runs alone with its row drawn whole (scene_of). Run under ThreadSanitizer too.
-  const auto breaks_one = cb::sweep_first_breaks(points, cb::Solver::Rk4, 1, nullptr, {});
-  const auto breaks_two = cb::sweep_first_breaks(points, cb::Solver::Rk4, 2, nullptr, {});
-  std::size_t equal = 0, broke = 0;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    broke += breaks_one[i].broke;
-    equal += breaks_one[i].broke == breaks_two[i].broke &&
-             breaks_one[i].spring == breaks_two[i].spring && breaks_one[i].tau == breaks_two[i].tau;
-  }
-  CHECK(broke == points.size());
-  CHECK(equal == points.size());
+  const auto breaks_one = breaks_on_one_and_two(points, points);
   for (std::size_t i = 0; i < points.size(); i += 97) {
     INFO("point " << i);
     const cb::FirstBreak alone =

@@ -77,6 +77,17 @@ cb::ChainParams flawed(int seed, double shape, cb::BreakMode mode = cb::BreakMod
   return p;
 }
 
+// How many members end alike in `a` and `b`: the same kind, spring, tau to the bit and step.
+std::size_t same_ends(const std::vector<cb::LaneEnd>& a, const std::vector<cb::LaneEnd>& b) {
+  REQUIRE(a.size() == b.size());
+  std::size_t same = 0;
+  for (std::size_t m = 0; m < a.size(); ++m)
+    same += a[m].kind == b[m].kind && a[m].first.spring == b[m].first.spring &&
+            std::memcmp(&a[m].first.tau, &b[m].first.tau, sizeof(double)) == 0 &&
+            a[m].first.step == b[m].first.step;
+  return same;
+}
+
 }  // namespace
 
 TEST_CASE("an ensemble of Weibull seeds gives each seed's first break as Integrator alone",
@@ -151,30 +162,21 @@ void check_drawn(int beads, double shape, const cb::DriveDesc& drive, std::int64
   d.thresholds = {};
   d.drawn = {kScale, shape, seeds};
   REQUIRE(d.members() == static_cast<std::size_t>(count));
-  const auto same_ends = [&](const std::vector<cb::LaneEnd>& ends) {
-    REQUIRE(ends.size() == given.size());
-    std::size_t same = 0;
-    for (std::size_t m = 0; m < given.size(); ++m)
-      same += ends[m].kind == given[m].kind && ends[m].first.spring == given[m].first.spring &&
-              std::memcmp(&ends[m].first.tau, &given[m].first.tau, sizeof(double)) == 0 &&
-              ends[m].first.step == given[m].first.step;
-    return same;
-  };
   const std::vector<cb::LaneEnd> drawn = cb::ensemble_first_breaks(d);
-  CHECK(same_ends(drawn) == given.size());
+  CHECK(same_ends(drawn, given) == given.size());
   // Fewer slots in place: members move their draws to a row of their own (0: at their first),
   // some of them while others stay.
   for (const std::size_t slots : {2, 1, 0}) {
     INFO("slots " << slots);
     cb::ThresholdEnsemble few = d;
     few.drawn.slots = slots;
-    CHECK(same_ends(cb::ensemble_first_breaks(few)) == given.size());
+    CHECK(same_ends(cb::ensemble_first_breaks(few), given) == given.size());
   }
   CHECK(std::count_if(given.begin(), given.end(), [](const cb::LaneEnd& end) {
           return end.kind == cb::LaneEnd::Kind::Broke;
         }) > count / 2);
   // Two parts (threads) draw their own members.
-  CHECK(same_ends(cb::ensemble_first_breaks(d, nullptr, 2)) == given.size());
+  CHECK(same_ends(cb::ensemble_first_breaks(d, nullptr, 2), given) == given.size());
   for (std::size_t m = 0; m < 3; ++m) {
     cb::ChainParams p = e.chain;
     p.thresholds.assign(phi.begin() + static_cast<std::ptrdiff_t>(n * m),
@@ -452,14 +454,7 @@ TEST_CASE("an ensemble shared out on threads gives every member the same bits",
   REQUIRE(one.size() == static_cast<std::size_t>(count));
   for (const int workers : {2, 3}) {
     INFO("workers " << workers);
-    const std::vector<cb::LaneEnd> many = cb::ensemble_first_breaks(e, nullptr, workers);
-    REQUIRE(many.size() == one.size());
-    std::size_t same = 0;
-    for (std::size_t m = 0; m < one.size(); ++m)
-      same += many[m].kind == one[m].kind && many[m].first.spring == one[m].first.spring &&
-              std::memcmp(&many[m].first.tau, &one[m].first.tau, sizeof(double)) == 0 &&
-              many[m].first.step == one[m].first.step;
-    CHECK(same == one.size());
+    CHECK(same_ends(cb::ensemble_first_breaks(e, nullptr, workers), one) == one.size());
   }
   for (int m = 0; m < count; m += 13) {
     INFO("seed " << m + 1);
