@@ -25,18 +25,12 @@ inline constexpr int kMaxDrawnBeads = 1'000'000;
 
 // A uniform number in (0, 1), never 0 or 1: 53 random bits of hash(seed, index), centred.
 double uniform_open01(std::uint64_t seed, std::uint64_t index);
-// The same in two steps, for many indices of one seed: the seed's stream (mixed once), then
-// index i's 53 bits k, u = (k + 1/2) 2^-53 (uniform_of_bits). k is monotone in u: its top bits
-// order the draws without drawing them (threshold_levels.h). Inline: an ensemble's levels take
-// them 3 x 10^5 times, vectorised (threshold_ensemble_reach.inc).
-//
+
 // SplitMix64's finaliser: a bijection of 64-bit words whose every output bit depends on every
-// input bit (Steele, Lea and Flood, "Fast splittable pseudorandom number generators", 2014). The
-// seed is mixed first, so that neighbouring seeds give unrelated streams, then the index on a
-// Weyl step of its own.
-// In place, on U: std::uint64_t or a vector of them (GCC's vector extensions: several keys at
-// once, the same bits in each lane; by reference, as a vector wider than the target's registers
-// has no calling convention).
+// input bit (Steele, Lea and Flood, "Fast splittable pseudorandom number generators", 2014). In
+// place, on U: std::uint64_t or a vector of them (GCC's vector extensions: several keys at once,
+// the same bits in each lane; by reference, as a vector wider than the target's registers has no
+// calling convention).
 template <class U>
 inline void splitmix_in_place(U& z) {
   z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
@@ -47,15 +41,20 @@ inline std::uint64_t splitmix_finaliser(std::uint64_t z) {
   splitmix_in_place(z);
   return z;
 }
+
+// uniform_open01 in steps, for many indices of one seed (inline: an ensemble's levels take 3 x
+// 10^5 of them, vectorised, threshold_ensemble_reach.inc). The seed is mixed first, once for all
+// its indices, so that neighbouring seeds give unrelated streams (seed_stream); index i then on a
+// Weyl step of its own (its key, the same for every stream: index_key), mixed with the stream
+// into 53 bits k (uniform_bits); u = (k + 1/2) 2^-53 (uniform_of_bits). k is monotone in u: its
+// top bits order the draws without drawing them (threshold_levels.h).
 inline std::uint64_t seed_stream(std::uint64_t seed) {
   return splitmix_finaliser(seed + 0x9E3779B97F4A7C15ull);
 }
-// Index i's key (i C, the Weyl step), the same for every stream: kept where many streams take
-// the same indices.
 inline std::uint64_t index_key(std::uint64_t index) {
   return index * 0xD1B54A32D192ED03ull;
 }
-// Index keys' bits in place (U as splitmix_in_place's).
+// Keys' bits in place (U as splitmix_in_place's).
 template <class U>
 inline void uniform_bits_of_keys(std::uint64_t stream, U& key) {
   key ^= stream;
