@@ -25,6 +25,25 @@ TEST_CASE("thresholds: the uniform number of (seed, spring) is the documented ha
   CHECK(cb::uniform_open01(7, 30) == 0.16575583810128286);
 }
 
+TEST_CASE("thresholds: u stays inside (0, 1) for every 53 bits, and so the Weibull draws finite",
+          "[scene][flaws]") {
+  // (k + 1/2) 2^-53: exact below 2^52, rounded to an even neighbour above, and for the largest
+  // k to 1 itself, where a Weibull draw is infinite: that k is taken just below 1.
+  const std::uint64_t top = (std::uint64_t{1} << 53) - 1;
+  CHECK(cb::uniform_of_bits(0) == 0x1.0p-54);
+  CHECK(cb::uniform_of_bits(top) == 0x1.fffffffffffffp-1);
+  CHECK(cb::uniform_of_bits(top - 1) == 0x1.ffffffffffffep-1);  // 2^53 - 1.5 rounds to 2^53 - 2
+  CHECK(cb::uniform_of_bits(std::uint64_t{1} << 51) == 0.25 + 0x1.0p-54);
+  // The least and the largest draw bound every draw: positive and finite for these moduli, not
+  // where the least underflows (modulus 0.01: (2^-54)^100).
+  for (const double shape : {0.5, 1.5, 6.0, 40.0}) {
+    INFO("shape " << shape);
+    CHECK(std::isfinite(cb::weibull_threshold(0.8, shape, cb::uniform_of_bits(top))));
+    CHECK(cb::weibull_draws_positive_finite(0.8, shape));
+  }
+  CHECK_FALSE(cb::weibull_draws_positive_finite(1.0, 0.01));
+}
+
 TEST_CASE("thresholds: 10^5 Weibull draws pass a Kolmogorov-Smirnov test", "[scene][flaws]") {
   // D_n = sup |F_n(x) - F(x)| against F(x) = 1 - exp(-x^m). For n = 10^5 the 0.1 % critical
   // value is 1.949 / sqrt(n) = 0.00616 (Kolmogorov's distribution): a correct sampler

@@ -23,7 +23,8 @@ enum class ThresholdDist { Weibull, Normal };
 // under the sanitizers, where the fuzzers allow 10. Flawed chains are ensembles of short chains.
 inline constexpr int kMaxDrawnBeads = 1'000'000;
 
-// A uniform number in (0, 1), never 0 or 1: 53 random bits of hash(seed, index), centred.
+// A uniform number in (0, 1), never 0 or 1: 53 random bits of hash(seed, index), centred
+// (uniform_of_bits).
 double uniform_open01(std::uint64_t seed, std::uint64_t index);
 
 // SplitMix64's finaliser: a bijection of 64-bit words whose every output bit depends on every
@@ -68,8 +69,12 @@ inline std::uint64_t uniform_bits_of_key(std::uint64_t stream, std::uint64_t key
 inline std::uint64_t uniform_bits(std::uint64_t stream, std::uint64_t index) {
   return uniform_bits_of_key(stream, index_key(index));
 }
+// From 2^52 on, k + 1/2 is rounded to an even neighbour, and the largest k to 2^53: u = 1, where a
+// Weibull draw is infinite (its value came out finite but different with GCC and with clang).
+// That one k is taken just below 1, so that u stays inside (0, 1); every other k keeps its u.
 inline double uniform_of_bits(std::uint64_t bits) {
-  return (static_cast<double>(bits) + 0.5) * 0x1.0p-53;
+  const double u = (static_cast<double>(bits) + 0.5) * 0x1.0p-53;
+  return u < 1.0 ? u : 0x1.fffffffffffffp-1;
 }
 
 // Weibull of modulus `shape` and scale 1: F(x) = 1 - exp(-x^shape), x = (-ln(1 - u))^(1/shape).
