@@ -9,6 +9,7 @@
 #include <functional>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/csv.h"
@@ -68,6 +69,15 @@ std::vector<cb::FirstBreak> breaks_on_one_and_two(const cb::SweepPoints& one,
   CHECK(broke == one.size());
   CHECK(equal == one.size());
   return breaks_one;
+}
+
+// A sweep of scenes/flawed_chain.toml over `axes`; the two betas x 2048 seeds by default.
+cb::SweepOptions flawed_sweep(std::vector<std::string> axes = {"--values drive.beta=0.05,0.2",
+                                                               "--vary chain.seed=1:2048:2048"}) {
+  cb::SweepOptions o;
+  o.scene = std::string(CHAINBREAK_SCENES) + "/flawed_chain.toml";
+  o.axes = std::move(axes);
+  return o;
 }
 
 }  // namespace
@@ -198,12 +208,10 @@ TEST_CASE("a sweep's seed points and breaks on two threads are those of one", "[
            {"--vary chain.seed=1:2048:2048"},
            {"--values drive.beta=0.05,0.2", "--vary chain.seed=1:2048:2048"}}) {
     INFO(axes.front());
-    cb::SweepOptions o;
-    o.scene = std::string(CHAINBREAK_SCENES) + "/flawed_chain.toml";
+    cb::SweepOptions o = flawed_sweep(axes);
     // Normal thresholds: each seed's row drawn and checked before the runs (Weibull rows are
     // drawn later, where needed: the next test).
     o.overrides = {{"chain.threshold_dist", "normal"}, {"chain.threshold_shape", "0.1"}};
-    o.axes = axes;
     const cb::Grid grid = cb::sweep_grid(o);
     o.jobs = 1;
     const cb::SweepPoints one = cb::sweep_points(o, grid, {0, grid.size()});
@@ -235,9 +243,7 @@ TEST_CASE("a sweep's Weibull seeds are drawn where needed, each as `run` draws i
   // scene reader does, and the ensemble draws what it needs (its breaks: the CSV test below and
   // tests/test_threshold_ensemble.cpp). A normal draw, a hanging chain and a modulus whose
   // least draw underflows are drawn and checked before the runs.
-  cb::SweepOptions o;
-  o.scene = std::string(CHAINBREAK_SCENES) + "/flawed_chain.toml";
-  o.axes = {"--values drive.beta=0.05,0.2", "--vary chain.seed=1:2048:2048"};
+  cb::SweepOptions o = flawed_sweep();
   const cb::Grid grid = cb::sweep_grid(o);
   o.jobs = 2;
   const cb::SweepPoints points = cb::sweep_points(o, grid, {0, grid.size()});
@@ -288,9 +294,7 @@ TEST_CASE("a value the scene's text refuses is named by the option that gave it"
           "[sweep][scene][flaws]") {
   // chain.seed = 2.5 is refused by the reader (the text read again with the value as an
   // override), which names it "--set chain.seed=2.5"; the sweep names its option and value.
-  cb::SweepOptions o;
-  o.scene = std::string(CHAINBREAK_SCENES) + "/flawed_chain.toml";
-  o.axes = {"--values chain.seed=3,2.5"};
+  cb::SweepOptions o = flawed_sweep({"--values chain.seed=3,2.5"});
   const cb::Grid grid = cb::sweep_grid(o);
   CHECK_THROWS_WITH(cb::sweep_points(o, grid, {0, grid.size()}),
                     Catch::StartsWith("--values chain.seed=3,2.5 (value 2.5): chain.seed must be "
@@ -302,9 +306,7 @@ TEST_CASE("a sweep's CSV from the command line has every point's row, in order",
   // beta x 2048 seeds: 4096 rows, ~110 KB of text, written in chunks (sweep_command.cpp); each
   // row the grid's values and the in-memory sweep's spring and tau, read back exactly (the
   // CSV's numbers are shortest round-trip).
-  cb::SweepOptions o;
-  o.scene = std::string(CHAINBREAK_SCENES) + "/flawed_chain.toml";
-  o.axes = {"--values drive.beta=0.05,0.2", "--vary chain.seed=1:2048:2048"};
+  cb::SweepOptions o = flawed_sweep();
   const cb::Grid grid = cb::sweep_grid(o);
   const auto breaks = cb::sweep_first_breaks(cb::sweep_points(o, grid, {0, grid.size()}),
                                              cb::Solver::Rk4, 0, nullptr, {});
@@ -340,13 +342,12 @@ TEST_CASE("a beta x seed grid's memory counts each seed's thresholds once", "[sw
   // 20 betas x 500 seeds of a 1000-bead chain: the points share 500 rows of 1000 thresholds
   // (sweep_points.cpp). The estimate must cover the rows the points hold, and not count a row
   // a point (20 x as many).
-  cb::SweepOptions o;
-  o.scene = std::string(CHAINBREAK_SCENES) + "/flawed_chain.toml";
+  cb::SweepOptions o =
+      flawed_sweep({"--vary drive.beta=0.01:0.2:20", "--vary chain.seed=1:500:500"});
   // Rows drawn before the runs: normal thresholds (every_draw_passes takes only Weibull ones).
   o.overrides = {{"chain.beads", "1000"},
                  {"chain.threshold_dist", "normal"},
                  {"chain.threshold_shape", "0.1"}};
-  o.axes = {"--vary drive.beta=0.01:0.2:20", "--vary chain.seed=1:500:500"};
   const cb::Grid grid = cb::sweep_grid(o);
   for (const cb::PointRange range : {cb::PointRange{0, grid.size()}, cb::PointRange{2600, 2900}}) {
     INFO("points " << range.first << ".." << range.last);
